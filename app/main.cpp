@@ -1,0 +1,73 @@
+// gearbench: command-line front end. Parses, dispatches, prints; no physics.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <iostream>
+
+#include "build_info.h"
+#include "commands.h"
+#include "model/errors.h"
+
+namespace {
+
+std::string version_string() {
+  return fmt::format("gearbench {} (git {}{})", gearbench::build::version(),
+                     gearbench::build::git_sha(), gearbench::build::git_dirty() ? "-dirty" : "");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace gearbench::app;
+  CLI::App cli{"gearbench: gear tribology and dynamics solvers, verified against independent references"};
+  cli.set_version_flag("--version", version_string());
+  cli.require_subcommand(1);
+
+  std::string case_path, output_path;
+  auto* run = cli.add_subcommand("run", "solve one case file; JSON result on stdout (or -o)");
+  run->add_option("case", case_path, "case file (JSON); its \"kind\" picks the solver")->required();
+  run->add_option("-o,--output", output_path, "write the JSON result here instead of stdout");
+
+  std::string tier = "fast", out_dir = default_output_dir(), cases_dir = default_cases_dir();
+  auto* verify = cli.add_subcommand("verify", "run the verification matrix and write a versioned report");
+  verify->add_option("--tier", tier, "fast or full")->check(CLI::IsMember({"fast", "full"}));
+  verify->add_option("--out", out_dir, "parent folder of the report")->capture_default_str();
+  verify->add_option("--cases", cases_dir, "folder of the built-in cases")->capture_default_str();
+
+  auto* report = cli.add_subcommand("report", "work with reports");
+  report->require_subcommand(1);
+  std::string before, after;
+  auto* compare = report->add_subcommand("compare", "show what changed between two reports");
+  compare->add_option("A", before, "earlier report folder or report.json")->required();
+  compare->add_option("B", after, "later report folder or report.json")->required();
+
+  std::string bench_out = default_output_dir() + "/bench", filter;
+  double min_time = 0.2;
+  auto* bench = cli.add_subcommand("bench", "run the benchmarks and record them with their context");
+  bench->add_option("--out", bench_out, "folder for the benchmark record")->capture_default_str();
+  bench->add_option("--filter", filter, "regular expression selecting benchmarks");
+  bench->add_option("--min-time", min_time, "minimum seconds per benchmark")->capture_default_str();
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = cli.exit(e);
+    return code == 0 ? exit_ok : exit_bad_input;
+  }
+
+  try {
+    if (*run) return run_command(case_path, output_path);
+    if (*verify) return verify_command(tier, out_dir, cases_dir);
+    if (*compare) return report_compare_command(before, after);
+    if (*bench) return bench_command(bench_out, filter, min_time);
+  } catch (const gearbench::InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return exit_bad_input;
+  } catch (const gearbench::ConvergenceError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return exit_not_converged;
+  } catch (const std::exception& e) {
+    std::cerr << "error: internal: " << e.what() << "\n";
+    return exit_failed;
+  }
+  return exit_failed;
+}

@@ -1,0 +1,29 @@
+#include <filesystem>
+#include <fmt/format.h>
+#include <iostream>
+
+#include "build_info.h"
+#include "check_registry.h"
+#include "commands.h"
+#include "model/errors.h"
+
+namespace gearbench::app {
+
+std::string default_output_dir() { return std::string(build::source_dir()) + "/reports/out"; }
+std::string default_cases_dir() { return std::string(build::source_dir()) + "/cases"; }
+
+int verify_command(const std::string& tier, const std::string& out_dir, const std::string& cases_dir) {
+  const auto parsed = verification::parse_tier(tier);
+  if (!std::filesystem::is_directory(cases_dir))
+    throw InputError(fmt::format("--cases {}: not a directory", cases_dir));
+  const verification::CheckContext context{cases_dir};
+  const auto report = verification::run_verification(
+      parsed, context, [](const std::string& line) { std::cerr << line << std::endl; });
+  const std::string folder = reports::write_report(report, out_dir);
+  std::cerr << fmt::format("{} of {} checks pass\n", report.checks.size() - report.failures(),
+                           report.checks.size());
+  std::cout << folder << "/report.md\n";
+  return report.failures() == 0 ? exit_ok : exit_failed;
+}
+
+}  // namespace gearbench::app

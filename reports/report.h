@@ -1,0 +1,86 @@
+#pragma once
+// A versioned verification report: every figure a solver produced, compared with an
+// independent reference under a stated tolerance, with provenance. Written as a folder
+// <UTC date>_<short sha>/ holding report.json, report.md and figures/*.svg.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace gearbench::reports {
+
+/// |value − reference| ≤ abs + rel·|reference| passes.
+struct Tolerance {
+  double abs = 0.0;
+  double rel = 0.0;
+};
+
+struct CheckRecord {
+  std::string id;             ///< stable identifier, e.g. "geometry.seed004.contact_ratio"
+  std::string section;        ///< report section, e.g. "Involute geometry"
+  std::string solver;
+  std::string reference;
+  std::string quantity;
+  std::string unit;
+  double value = 0.0;
+  double reference_value = 0.0;
+  Tolerance tolerance;
+  std::string justification;  ///< why this tolerance
+  double seconds = 0.0;
+  nlohmann::json diagnostics = nlohmann::json::object();
+  std::string error;          ///< set when the check threw instead of producing a value
+
+  [[nodiscard]] double abs_error() const;
+  [[nodiscard]] double rel_error() const;
+  [[nodiscard]] bool passed() const;
+};
+
+struct Series {
+  std::string label;
+  std::vector<double> x;
+  std::vector<double> y;
+};
+
+struct Figure {
+  std::string id;       ///< file stem under figures/
+  std::string section;
+  std::string title;
+  std::string xlabel;
+  std::string ylabel;
+  std::vector<Series> series;
+};
+
+/// Free text for a section (e.g. what a seed reproduction reached and why it differs).
+struct Note {
+  std::string section;
+  std::string text;
+};
+
+struct Report {
+  std::string tier;
+  std::vector<CheckRecord> checks;
+  std::vector<Figure> figures;
+  std::vector<Note> notes;
+
+  [[nodiscard]] int failures() const;
+};
+
+/// Code, build and machine provenance as a JSON object.
+nlohmann::json provenance();
+/// A fingerprint of the machine and toolchain: timings are comparable only when equal.
+std::string machine_fingerprint();
+/// "<UTC date>_<short sha>", the report folder name.
+std::string report_folder_name();
+
+nlohmann::json to_json(const Report& report);
+std::string to_markdown(const Report& report, const nlohmann::json& meta);
+
+/// Writes the report atomically into parent/<folder>: a temporary folder is filled and
+/// renamed. An existing folder of that name is never overwritten (a suffix -2, -3, ...
+/// is added). Returns the folder written.
+std::string write_report(const Report& report, const std::string& parent);
+
+/// Renders a figure to SVG with gnuplot; returns false (and leaves no file) when gnuplot
+/// is not available or fails.
+bool render_svg(const Figure& figure, const std::string& svg_path);
+
+}  // namespace gearbench::reports

@@ -1,0 +1,111 @@
+#include "case_reader.h"
+
+#include "errors.h"
+
+#include <numbers>
+
+namespace gearbench::model {
+
+namespace {
+constexpr double mm = 1e-3;
+constexpr double um = 1e-6;
+constexpr double deg = std::numbers::pi / 180.0;
+constexpr double GPa = 1e9;
+}  // namespace
+
+GearPair read_gear_pair(ObjectReader s) {
+  GearPair g;
+  // Tooth counts: the undercut-free minimum depends on the shift and is checked by the
+  // geometry; 5 is a hard floor for any involute gear.
+  g.teeth = s.integer_pair("teeth", 5, 10000);
+  g.normal_module = s.number("normal_module_mm", Range::positive(1000.0), "mm") * mm;
+  g.normal_pressure_angle =
+      s.number("normal_pressure_angle_deg", Range::closed(10.0, 35.0), "deg") * deg;
+  g.helix_angle = s.optional_number("helix_angle_deg", Range::closed(0.0, 45.0), "deg")
+                      .value_or(0.0) * deg;
+  g.face_width = s.number("face_width_mm", Range::positive(1e5), "mm") * mm;
+  g.profile_shift =
+      s.optional_number_pair("profile_shift", Range::closed(-1.0, 2.0)).value_or(
+          std::array<double, 2>{0.0, 0.0});
+  g.addendum_coef = s.optional_number("addendum_coef", Range::positive(2.0)).value_or(1.0);
+  g.dedendum_coef = s.optional_number("dedendum_coef", Range::positive(2.5)).value_or(1.25);
+  g.root_radius_coef =
+      s.optional_number("root_radius_coef", {0.0, 1.0, false, true}).value_or(0.38);
+  if (auto a = s.optional_number("center_distance_mm", Range::positive(1e6), "mm"))
+    g.center_distance = *a * mm;
+  if (auto da = s.optional_number_pair("tip_diameter_mm", Range::positive(1e7), "mm"))
+    g.tip_diameter = std::array<double, 2>{(*da)[0] * mm, (*da)[1] * mm};
+  if (s.has("herringbone")) {
+    auto h = s.object("herringbone");
+    g.herringbone = Herringbone{h.number("groove_width_mm", Range::closed(0.0, 1e5), "mm") * mm};
+    h.finish();
+    if (g.helix_angle == 0.0)
+      throw InputError(s.key_path("helix_angle_deg") +
+                       " = 0: a herringbone pair needs a helix angle in (0, 45] deg");
+  }
+  s.finish();
+  return g;
+}
+
+namespace {
+Material read_material(ObjectReader s) {
+  Material m;
+  m.youngs_modulus = s.number("youngs_modulus_GPa", Range::positive(1e7), "GPa") * GPa;
+  m.poisson_ratio = s.number("poisson_ratio", Range::closed(0.0, 0.5));
+  m.density = s.optional_number("density_kg_m3", Range::positive(1e5), "kg/m3").value_or(7850.0);
+  s.finish();
+  return m;
+}
+}  // namespace
+
+std::array<Material, 2> read_materials(ObjectReader& root) {
+  const auto pair = root.object_or_pair("materials");
+  return {read_material(ObjectReader(pair.objects[0], pair.paths[0])),
+          read_material(ObjectReader(pair.objects[1], pair.paths[1]))};
+}
+
+OperatingPoint read_operating(ObjectReader s) {
+  OperatingPoint op;
+  op.pinion_speed =
+      s.number("pinion_speed_rpm", Range::positive(1e6), "rpm") * 2.0 * std::numbers::pi / 60.0;
+  op.pinion_torque = s.number("pinion_torque_Nm", Range::positive(1e9), "N*m");
+  op.oil_temperature =
+      s.optional_number("oil_temperature_C", Range::closed(-60.0, 400.0), "degC").value_or(40.0) +
+      273.15;
+  const auto ra = s.optional_number_pair("roughness_Ra_um", Range::closed(0.0, 100.0), "um")
+                      .value_or(std::array<double, 2>{0.0, 0.0});
+  op.roughness_Ra = {ra[0] * um, ra[1] * um};
+  s.finish();
+  return op;
+}
+
+Lubricant read_lubricant(ObjectReader s) {
+  Lubricant l;
+  l.viscosity = s.number("viscosity_Pa_s", Range::positive(1e4), "Pa*s");
+  l.pressure_viscosity =
+      s.number("pressure_viscosity_1_per_GPa", Range::closed(0.0, 100.0), "1/GPa") / GPa;
+  l.roelands_z = s.optional_number("roelands_z", Range::positive(2.0));
+  l.density = s.optional_number("density_kg_m3", Range::positive(1e4), "kg/m3");
+  if (auto v = s.optional_number("nu40_mm2_s", Range::positive(1e7), "mm2/s")) l.nu40 = *v * 1e-6;
+  if (auto v = s.optional_number("nu100_mm2_s", Range::positive(1e7), "mm2/s")) l.nu100 = *v * 1e-6;
+  if (l.nu40 && l.nu100 && *l.nu100 >= *l.nu40)
+    throw InputError(s.key_path("nu100_mm2_s") + " = " + format_value(*l.nu100 * 1e6) +
+                     ": must be below nu40_mm2_s = " + format_value(*l.nu40 * 1e6) +
+                     " (viscosity falls with temperature)");
+  l.thermal_conductivity =
+      s.optional_number("thermal_conductivity_W_per_mK", Range::positive(1e3), "W/(m*K)");
+  l.specific_heat = s.optional_number("specific_heat_J_per_kgK", Range::positive(1e6), "J/(kg*K)");
+  s.finish();
+  return l;
+}
+
+GearCase read_gear_case(ObjectReader& root) {
+  GearCase c;
+  c.gear_pair = read_gear_pair(root.object("gear_pair"));
+  if (root.has("materials")) c.materials = read_materials(root);
+  if (root.has("operating")) c.operating = read_operating(root.object("operating"));
+  if (root.has("lubricant")) c.lubricant = read_lubricant(root.object("lubricant"));
+  return c;
+}
+
+}  // namespace gearbench::model

@@ -1,0 +1,92 @@
+#pragma once
+// Validating reader over a JSON object: every access names the key by its full path
+// ("gear_pair.teeth[1]"), checks type and range, and remembers which keys it was asked
+// about, so that finish() can reject unknown keys with the nearest known one suggested.
+#include <array>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace gearbench::model {
+
+/// Allowed interval of a number; open or closed at either end.
+struct Range {
+  double lo;
+  double hi;
+  bool lo_open = false;
+  bool hi_open = false;
+
+  static Range positive(double hi = 1e300) { return {0.0, hi, true, false}; }
+  static Range closed(double lo, double hi) { return {lo, hi, false, false}; }
+  [[nodiscard]] bool contains(double v) const;
+  [[nodiscard]] std::string describe() const;
+};
+
+/// Formats a number the way an error message shows it (shortest round-trip form).
+std::string format_value(double v);
+
+/// Parses JSON text; malformed input becomes an InputError that gives the line number.
+nlohmann::json parse_json(const std::string& text, const std::string& source_name);
+
+/// Reads a file and parses it (InputError if missing or malformed).
+nlohmann::json read_json_file(const std::string& path);
+
+class ObjectReader {
+ public:
+  /// `path` is the key path of this object ("" for the root).
+  ObjectReader(const nlohmann::json& object, std::string path);
+
+  [[nodiscard]] bool has(const std::string& key);
+
+  double number(const std::string& key, const Range& range, const std::string& unit = "");
+  std::optional<double> optional_number(const std::string& key, const Range& range,
+                                        const std::string& unit = "");
+  int integer(const std::string& key, int lo, int hi);
+  std::optional<int> optional_integer(const std::string& key, int lo, int hi);
+  std::string string(const std::string& key, const std::vector<std::string>& allowed = {});
+  std::optional<std::string> optional_string(const std::string& key,
+                                             const std::vector<std::string>& allowed = {});
+
+  /// A two-element array [gear 1, gear 2] of numbers / integers.
+  std::array<double, 2> number_pair(const std::string& key, const Range& range,
+                                    const std::string& unit = "");
+  std::optional<std::array<double, 2>> optional_number_pair(const std::string& key,
+                                                            const Range& range,
+                                                            const std::string& unit = "");
+  std::array<int, 2> integer_pair(const std::string& key, int lo, int hi);
+
+  /// A nested object, read by its own reader.
+  ObjectReader object(const std::string& key);
+  /// A nested object or an array of objects: `object_or_pair` accepts one object
+  /// (meaning the same for both gears) or an array of exactly two.
+  struct ObjectPair {
+    std::array<nlohmann::json, 2> objects;
+    std::array<std::string, 2> paths;  ///< key paths for error messages
+  };
+  ObjectPair object_or_pair(const std::string& key);
+
+  /// Declares a key as known without reading it (read elsewhere).
+  void accept(const std::string& key);
+
+  /// Throws InputError for the first key that was never asked about.
+  void finish() const;
+
+  [[nodiscard]] std::string key_path(const std::string& key) const;
+  [[nodiscard]] const std::string& path() const { return path_; }
+
+ private:
+  const nlohmann::json& require(const std::string& key);
+  double checked_number(const nlohmann::json& value, const std::string& full_key,
+                        const Range& range, const std::string& unit) const;
+
+  const nlohmann::json& object_;
+  std::string path_;
+  std::set<std::string> known_;
+};
+
+/// Levenshtein distance, used to suggest the nearest known key.
+std::size_t edit_distance(const std::string& a, const std::string& b);
+
+}  // namespace gearbench::model

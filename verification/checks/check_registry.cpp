@@ -1,0 +1,84 @@
+#include "check_registry.h"
+
+#include <chrono>
+#include <fmt/format.h>
+
+#include "model/errors.h"
+
+namespace gearbench::verification {
+
+Registry& Registry::instance() {
+  static Registry registry;
+  return registry;
+}
+
+void Registry::add(CheckSpec check) { checks_.push_back(std::move(check)); }
+void Registry::add(SectionSpec section) { sections_.push_back(std::move(section)); }
+
+std::vector<const CheckSpec*> Registry::checks(Tier tier) const {
+  std::vector<const CheckSpec*> out;
+  for (const auto& c : checks_)
+    if (tier == Tier::full || c.tier == Tier::fast) out.push_back(&c);
+  return out;
+}
+
+std::vector<const SectionSpec*> Registry::sections(Tier tier) const {
+  std::vector<const SectionSpec*> out;
+  for (const auto& s : sections_)
+    if (tier == Tier::full || s.tier == Tier::fast) out.push_back(&s);
+  return out;
+}
+
+reports::CheckRecord run_check(const CheckSpec& check, const CheckContext& context) {
+  reports::CheckRecord r;
+  r.id = check.id;
+  r.section = check.section;
+  r.solver = check.solver;
+  r.reference = check.reference;
+  r.quantity = check.quantity;
+  r.unit = check.unit;
+  r.tolerance = check.tolerance;
+  r.justification = check.justification;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    const CheckValue v = check.run(context);
+    r.value = v.value;
+    r.reference_value = v.reference;
+    r.diagnostics = v.diagnostics;
+  } catch (const std::exception& e) {
+    r.error = e.what();
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+reports::Report run_verification(Tier tier, const CheckContext& context,
+                                 const std::function<void(const std::string&)>& progress) {
+  reports::Report report;
+  report.tier = tier_name(tier);
+  const auto checks = Registry::instance().checks(tier);
+  for (std::size_t i = 0; i < checks.size(); ++i) {
+    report.checks.push_back(run_check(*checks[i], context));
+    const auto& r = report.checks.back();
+    progress(fmt::format("[{}/{}] {} ... {} ({:.2f} s)", i + 1, checks.size(), r.id,
+                         r.passed() ? "pass" : "FAIL", r.seconds));
+  }
+  for (const auto* section : Registry::instance().sections(tier)) {
+    try {
+      section->add(context, report);
+    } catch (const std::exception& e) {
+      report.notes.push_back({section->id, fmt::format("Section failed: {}", e.what())});
+    }
+  }
+  return report;
+}
+
+Tier parse_tier(const std::string& name) {
+  if (name == "fast") return Tier::fast;
+  if (name == "full") return Tier::full;
+  throw InputError(fmt::format("--tier = \"{}\": allowed values are fast, full", name));
+}
+
+std::string tier_name(Tier tier) { return tier == Tier::fast ? "fast" : "full"; }
+
+}  // namespace gearbench::verification

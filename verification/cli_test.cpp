@@ -1,0 +1,166 @@
+// The CLI contract, end to end through the gearbench executable: results on stdout, and
+// for every class of bad input a one-line `error:` naming the key, and exit code 2.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exit_code;
+  std::string out;
+  std::string err;
+};
+
+Outcome run_gearbench(const std::string& args) {
+  const auto dir = fs::temp_directory_path();
+  const auto out_file = dir / ("gb_cli_out_" + std::to_string(::getpid()));
+  const auto err_file = dir / ("gb_cli_err_" + std::to_string(::getpid()));
+  const std::string command = std::string("'") + GEARBENCH_EXE + "' " + args + " >'" +
+                              out_file.string() + "' 2>'" + err_file.string() + "'";
+  const int status = std::system(command.c_str());
+  auto slurp = [](const fs::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  Outcome o{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out_file), slurp(err_file)};
+  fs::remove(out_file);
+  fs::remove(err_file);
+  return o;
+}
+
+std::string write_case(const std::string& name, const std::string& text) {
+  const auto path = fs::temp_directory_path() / ("gb_case_" + name + ".json");
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+json seed004() {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed004_spur_geometry.json");
+  return json::parse(in);
+}
+
+TEST(Cli, Seed004GeometryPrintsContactRatio) {
+  const auto o = run_gearbench("run " GEARBENCH_SOURCE_DIR "/cases/seed004_spur_geometry.json");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  EXPECT_NEAR(r["contact_ratio_transverse"].get<double>(), 1.454, 5e-4);
+  for (const char* key : {"center_distance_mm", "working_pressure_angle_deg", "base_pitch_transverse_mm",
+                          "contact_ratio_overlap", "contact_ratio_total", "base_radius_mm",
+                          "tip_radius_mm", "root_radius_mm"})
+    EXPECT_TRUE(r.contains(key)) << key;
+  for (const char* point : {"T2", "A", "B", "C", "D", "E"})
+    EXPECT_TRUE(r["line_of_action_mm"].contains(point)) << point;
+  EXPECT_EQ(r["profile"]["slide_to_roll"].size(), 51u);
+  EXPECT_EQ(r["profile"]["entrainment_m_s"].size(), 51u);
+}
+
+TEST(Cli, OutputFileAndVersion) {
+  const auto out = (fs::temp_directory_path() / "gb_cli_result.json").string();
+  const auto o = run_gearbench("run " GEARBENCH_SOURCE_DIR "/cases/seed000_herringbone_geometry.json -o " + out);
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  std::ifstream in(out);
+  const auto r = json::parse(in);
+  EXPECT_GT(r["contact_ratio_overlap"].get<double>(), 1.0);
+  EXPECT_TRUE(r.contains("contact_lines"));
+  fs::remove(out);
+  const auto v = run_gearbench("--version");
+  EXPECT_EQ(v.exit_code, 0);
+  EXPECT_EQ(v.out.rfind("gearbench ", 0), 0u) << v.out;
+  EXPECT_NE(v.out.find("(git "), std::string::npos);
+}
+
+struct BadCase {
+  std::string name;
+  std::function<void(json&)> edit;  // applied to the seed 004 case
+  std::string expected;             // substring of the error line
+};
+
+class BadInput : public testing::TestWithParam<BadCase> {};
+
+TEST_P(BadInput, ExitTwoWithKeyNamed) {
+  auto j = seed004();
+  GetParam().edit(j);
+  const auto o = run_gearbench("run " + write_case(GetParam().name, j.dump()));
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  EXPECT_EQ(o.err.rfind("error: ", 0), 0u) << o.err;
+  EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << "one line: " << o.err;
+  EXPECT_NE(o.err.find(GetParam().expected), std::string::npos) << o.err;
+  EXPECT_TRUE(o.out.empty());
+}
+
+const BadCase bad_cases[] = {
+    {"unknown_key", [](json& j) { j["gear_pair"]["teeht"] = 3; },
+     "gear_pair.teeht: unknown key (did you mean 'teeth'?)"},
+    {"unknown_top_key", [](json& j) { j["operatin"] = j["operating"]; },
+     "operatin: unknown key (did you mean 'operating'?)"},
+    {"missing_key", [](json& j) { j["gear_pair"].erase("face_width_mm"); },
+     "gear_pair.face_width_mm: missing required key"},
+    {"missing_kind", [](json& j) { j.erase("kind"); }, "kind: missing required key"},
+    {"unknown_kind", [](json& j) { j["kind"] = "geometri"; }, "(did you mean 'geometry'?)"},
+    {"wrong_type", [](json& j) { j["gear_pair"]["teeth"] = "22"; },
+     "gear_pair.teeth = \"22\": must be an array of two values"},
+    {"wrong_type_number", [](json& j) { j["operating"]["pinion_speed_rpm"] = true; },
+     "operating.pinion_speed_rpm = true: must be a number"},
+    {"undercut", [](json& j) { j["gear_pair"]["teeth"] = {8, 32}; },
+     "gear_pair.teeth[0] = 8: undercut by the generating rack"},
+    {"module_nonpositive", [](json& j) { j["gear_pair"]["normal_module_mm"] = -2; },
+     "gear_pair.normal_module_mm = -2: allowed range is (0, 1000] mm"},
+    {"face_width_zero", [](json& j) { j["gear_pair"]["face_width_mm"] = 0; },
+     "gear_pair.face_width_mm = 0: allowed range is (0, 100000] mm"},
+    {"speed_negative", [](json& j) { j["operating"]["pinion_speed_rpm"] = -1000; },
+     "operating.pinion_speed_rpm = -1000: allowed range is (0, 1000000] rpm"},
+    {"pressure_angle", [](json& j) { j["gear_pair"]["normal_pressure_angle_deg"] = 9.5; },
+     "gear_pair.normal_pressure_angle_deg = 9.5: allowed range is [10, 35] deg"},
+    {"helix_angle", [](json& j) { j["gear_pair"]["helix_angle_deg"] = 50; },
+     "gear_pair.helix_angle_deg = 50: allowed range is [0, 45] deg"},
+    {"poisson", [](json& j) { j["materials"]["poisson_ratio"] = 0.55; },
+     "materials.poisson_ratio = 0.55: allowed range is [0, 0.5]"},
+    {"center_distance", [](json& j) { j["gear_pair"]["center_distance_mm"] = 53.5; },
+     "gear_pair.center_distance_mm = 53.5: incompatible with profile_shift sum 0"},
+    {"contact_ratio", [](json& j) { j["gear_pair"]["tip_diameter_mm"] = {45.0, 65.5}; },
+     "transverse contact ratio 0.49"},
+    {"tip_interference",
+     [](json& j) {
+       j["gear_pair"]["teeth"] = {18, 90};
+       j["gear_pair"]["normal_pressure_angle_deg"] = 20;
+       j["gear_pair"]["tip_diameter_mm"] = {40.0, 184.8};
+     },
+     "tip interference"},
+    {"seed001_printed_tip",
+     [](json& j) {
+       std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed001_wind_geometry.json");
+       j = json::parse(in);
+       j["gear_pair"]["tip_diameter_mm"] = {309.903, 626.35};
+     },
+     "gear_pair.tip_diameter_mm[0] = 309.903: must exceed the base diameter"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Classes, BadInput, testing::ValuesIn(bad_cases),
+                         [](const testing::TestParamInfo<BadCase>& param_info) { return param_info.param.name; });
+
+TEST(Cli, MalformedJsonGivesLine) {
+  const auto o = run_gearbench("run " + write_case("malformed", "{\n  \"kind\": \"geometry\",\n  \"gear_pair\": {,\n}\n"));
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.err.find("malformed JSON at line 3"), std::string::npos) << o.err;
+}
+
+TEST(Cli, MissingFileAndBadArguments) {
+  auto o = run_gearbench("run /nonexistent/case.json");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.err.find("cannot open the case file"), std::string::npos) << o.err;
+  o = run_gearbench("verify --tier medium");
+  EXPECT_EQ(o.exit_code, 2);
+  o = run_gearbench("frobnicate");
+  EXPECT_EQ(o.exit_code, 2);
+}
+
+}  // namespace

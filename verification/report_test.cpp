@@ -1,0 +1,79 @@
+// Unit tests of reports/: no NaN reaches a report, pass/fail and comparison logic, and
+// the atomic, never-overwriting report folder.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "compare.h"
+#include "report.h"
+
+namespace gearbench::reports {
+namespace {
+
+CheckRecord record(const std::string& id, double value, double reference, double rel) {
+  CheckRecord c;
+  c.id = id;
+  c.section = "s";
+  c.value = value;
+  c.reference_value = reference;
+  c.tolerance = {0.0, rel};
+  return c;
+}
+
+TEST(CheckRecord, ToleranceDecides) {
+  EXPECT_TRUE(record("a", 1.0005, 1.0, 1e-3).passed());
+  EXPECT_FALSE(record("a", 1.002, 1.0, 1e-3).passed());
+  EXPECT_FALSE(record("a", std::nan(""), 1.0, 1e-3).passed());
+  auto thrown = record("a", 1.0, 1.0, 1e-3);
+  thrown.error = "solver threw";
+  EXPECT_FALSE(thrown.passed());
+}
+
+TEST(ReportJson, NonFiniteBecomesNull) {
+  Report r;
+  r.tier = "fast";
+  r.checks.push_back(record("nan", std::nan(""), 1.0, 1e-3));
+  r.figures.push_back({"f", "s", "t", "x", "y", {{"l", {0.0, 1.0}, {1.0, INFINITY}}}});
+  const auto j = to_json(r);
+  EXPECT_TRUE(j["checks"][0]["value"].is_null());
+  EXPECT_EQ(j["checks"][0]["status"], "fail");
+  EXPECT_TRUE(j["figures"][0]["series"][0]["y"][1].is_null());
+  EXPECT_EQ(j["summary"]["failed"], 1);
+  EXPECT_EQ(j.dump().find("NaN"), std::string::npos);
+}
+
+TEST(Compare, FlagsRegressionsChangesAndTimings) {
+  Report before, after;
+  before.checks = {record("x", 1.0, 1.0, 1e-6), record("y", 2.0, 2.0, 1e-6)};
+  after.checks = {record("x", 1.5, 1.0, 1e-6), record("z", 2.0, 2.0, 1e-6)};
+  before.checks[0].seconds = 1.0;
+  after.checks[0].seconds = 1.5;
+  const auto c = compare_reports(to_json(before), to_json(after));
+  ASSERT_EQ(c.regressions.size(), 1u);
+  EXPECT_EQ(c.regressions[0], "x");
+  EXPECT_EQ(c.changed.size(), 1u);
+  EXPECT_EQ(c.added, std::vector<std::string>{"z"});
+  EXPECT_EQ(c.removed, std::vector<std::string>{"y"});
+  EXPECT_TRUE(c.same_machine);  // same process: same fingerprint
+  EXPECT_EQ(c.slower.size(), 1u);
+}
+
+TEST(WriteReport, NeverOverwritesAndLeavesNoTemporary) {
+  const auto dir = std::filesystem::temp_directory_path() / "gearbench_report_test";
+  std::filesystem::remove_all(dir);
+  Report r;
+  r.tier = "fast";
+  r.checks.push_back(record("x", 1.0, 1.0, 1e-6));
+  const auto first = write_report(r, dir.string());
+  const auto second = write_report(r, dir.string());
+  EXPECT_NE(first, second);
+  EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(first) / "report.json"));
+  EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(second) / "report.md"));
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    EXPECT_NE(entry.path().filename().string().rfind(".tmp", 0), 0u) << entry.path();
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace gearbench::reports
