@@ -75,6 +75,13 @@ std::string utc_now(const char* format) {
   return buffer;
 }
 
+/// Markdown table cells may not contain '|'.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
 std::string format_number(const json& v) {
   if (v.is_null()) return "—";
   const double x = v.get<double>();
@@ -169,18 +176,20 @@ std::string to_markdown(const Report& report, const json& meta) {
   md += fmt::format("**{} of {} checks pass.**\n\n", report.checks.size() - report.failures(),
                     report.checks.size());
 
-  md += "## Overview\n\n| solver | reference | quantity | value | reference value | deviation | "
-        "tolerance | status |\n|---|---|---|---|---|---|---|---|\n";
+  md += "## Overview\n\n| check | solver | reference | quantity | value | reference value | "
+        "deviation | tolerance | status |\n|---|---|---|---|---|---|---|---|---|\n";
   const json j = to_json(report);
   for (const auto& c : j["checks"]) {
     const auto& tol = c["tolerance"];
     std::string tol_text;
-    if (tol["abs"].get<double>() > 0) tol_text += fmt::format("±{:.3g} {}", tol["abs"].get<double>(), c["unit"].get<std::string>());
+    const std::string unit = c["unit"] == "-" ? "" : " " + c["unit"].get<std::string>();
+    if (tol["abs"].get<double>() > 0) tol_text += fmt::format("±{:.3g}{}", tol["abs"].get<double>(), unit);
     if (tol["rel"].get<double>() > 0)
       tol_text += fmt::format("{}{:.3g} %", tol_text.empty() ? "±" : " + ", 100 * tol["rel"].get<double>());
-    md += fmt::format("| {} | {} | {} [{}] | {} | {} | {} | {} | {} |\n",
-                      c["solver"].get<std::string>(), c["reference"].get<std::string>(),
-                      c["quantity"].get<std::string>(), c["unit"].get<std::string>(),
+    md += fmt::format("| `{}` | {} | {} | {} [{}] | {} | {} | {} | {} | {} |\n",
+                      c["id"].get<std::string>(), cell(c["solver"].get<std::string>()),
+                      cell(c["reference"].get<std::string>()),
+                      cell(c["quantity"].get<std::string>()), c["unit"].get<std::string>(),
                       format_number(c["value"]), format_number(c["reference_value"]),
                       format_number(c["abs_error"]), tol_text,
                       c["status"] == "pass" ? "pass" : "**FAIL**");
@@ -208,7 +217,7 @@ std::string to_markdown(const Report& report, const json& meta) {
       }
       md += fmt::format("| `{}` | {} | {} | {} | {:.3g} |\n", c["id"].get<std::string>(),
                         format_number(c["value"]), format_number(c["reference_value"]),
-                        c["tolerance"]["justification"].get<std::string>(),
+                        cell(c["tolerance"]["justification"].get<std::string>()),
                         c["seconds"].is_null() ? 0.0 : c["seconds"].get<double>());
       if (c.contains("error")) md += fmt::format("\n> error: {}\n\n", c["error"].get<std::string>());
     }
