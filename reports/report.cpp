@@ -78,7 +78,10 @@ std::string utc_now(const char* format) {
 /// Markdown table cells may not contain '|'.
 std::string cell(const std::string& text) {
   std::string out;
-  for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  for (char c : text) {
+    if (c == '|') out.push_back('\\');
+    out.push_back(c);
+  }
   return out;
 }
 
@@ -182,7 +185,8 @@ std::string to_markdown(const Report& report, const json& meta) {
   for (const auto& c : j["checks"]) {
     const auto& tol = c["tolerance"];
     std::string tol_text;
-    const std::string unit = c["unit"] == "-" ? "" : " " + c["unit"].get<std::string>();
+    const std::string unit =
+        c["unit"] == "-" ? std::string() : fmt::format(" {}", c["unit"].get<std::string>());
     if (tol["abs"].get<double>() > 0) tol_text += fmt::format("±{:.3g}{}", tol["abs"].get<double>(), unit);
     if (tol["rel"].get<double>() > 0)
       tol_text += fmt::format("{}{:.3g} %", tol_text.empty() ? "±" : " + ", 100 * tol["rel"].get<double>());
