@@ -21,19 +21,27 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
+/// Benchmark family: the name without its arguments ("BM_X/101" -> "BM_X").
+std::string family(const std::string& run_name) { return run_name.substr(0, run_name.find('/')); }
+
 json side_by_side_ratios(const json& benchmarks) {
-  std::map<std::string, double> times;
+  std::map<std::string, std::pair<std::string, double>> times;  // family -> (run name, time)
   for (const auto& b : benchmarks)
-    if (b.value("run_type", "iteration") == "iteration" || b.value("aggregate_name", "") == "median")
-      times[b["run_name"].get<std::string>()] = b["real_time"].get<double>();
+    if (b.value("run_type", "iteration") == "iteration" || b.value("aggregate_name", "") == "median") {
+      const auto name = b["run_name"].get<std::string>();
+      times.try_emplace(family(name), name, b["real_time"].get<double>());
+    }
   json ratios = json::object();
   const std::string suffix = "_baseline";
-  for (const auto& [name, t] : times) {
-    if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+  for (const auto& [fam, baseline] : times) {
+    if (fam.size() <= suffix.size() || fam.compare(fam.size() - suffix.size(), suffix.size(), suffix) != 0)
       continue;
-    const auto stem = name.substr(0, name.size() - suffix.size());
-    if (const auto it = times.find(stem); it != times.end() && t > 0.0)
-      ratios[stem] = {{"solver_time", it->second}, {"baseline_time", t}, {"ratio", it->second / t}};
+    const auto it = times.find(fam.substr(0, fam.size() - suffix.size()));
+    if (it == times.end() || baseline.second <= 0.0) continue;
+    ratios[it->second.first] = {{"baseline", baseline.first},
+                                {"solver_time", it->second.second},
+                                {"baseline_time", baseline.second},
+                                {"ratio", it->second.second / baseline.second}};
   }
   return ratios;
 }

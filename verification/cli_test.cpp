@@ -163,4 +163,47 @@ TEST(Cli, MissingFileAndBadArguments) {
   EXPECT_EQ(o.exit_code, 2);
 }
 
+TEST(Cli, VerifyTwiceThenCompare) {
+  const auto dir = fs::temp_directory_path() / "gb_cli_verify";
+  fs::remove_all(dir);
+  const auto first = run_gearbench("verify --out " + dir.string());
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_NE(first.err.find("checks pass"), std::string::npos);  // progress lines on stderr
+  const auto second = run_gearbench("verify --out " + dir.string());
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  auto folder = [](const std::string& out) { return fs::path(out.substr(0, out.find('\n'))).parent_path(); };
+  const auto a = folder(first.out), b = folder(second.out);
+  ASSERT_NE(a, b);  // never overwritten
+  for (const auto& f : {"report.json", "report.md"}) EXPECT_TRUE(fs::exists(a / f)) << f;
+  const auto same = run_gearbench("report compare " + a.string() + " " + b.string());
+  EXPECT_EQ(same.exit_code, 0) << same.out;
+  EXPECT_EQ(same.out.find("REGRESSIONS"), std::string::npos) << same.out;
+
+  // A check that went from pass to fail is flagged, and the exit code says so.
+  std::ifstream in(b / "report.json");
+  auto broken = json::parse(in);
+  broken["checks"][0]["status"] = "fail";
+  std::ofstream(dir / "broken.json") << broken.dump();
+  const auto regressed = run_gearbench("report compare " + a.string() + " " + (dir / "broken.json").string());
+  EXPECT_EQ(regressed.exit_code, 1);
+  EXPECT_NE(regressed.out.find("REGRESSIONS: pass -> fail (1)"), std::string::npos) << regressed.out;
+  fs::remove_all(dir);
+}
+
+TEST(Cli, BenchRecordsContextAndRatio) {
+  const std::string bench_exe = GEARBENCH_BINARY_DIR "/benchmarks/gearbench_benchmarks";
+  if (!fs::exists(bench_exe)) GTEST_SKIP() << "benchmarks not built in this preset";
+  const auto dir = fs::temp_directory_path() / "gb_cli_bench";
+  fs::remove_all(dir);
+  const auto o = run_gearbench("bench --filter BM_GeometryProfile --min-time 0.01 --out " + dir.string());
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  std::ifstream in(o.out.substr(0, o.out.find('\n')));
+  const auto record = json::parse(in);
+  EXPECT_TRUE(record["gearbench"]["code"].contains("git_sha"));
+  EXPECT_TRUE(record["gearbench"]["machine"].contains("fingerprint"));
+  ASSERT_TRUE(record["ratios"].contains("BM_GeometryProfile/101")) << record["ratios"].dump();
+  EXPECT_GT(record["ratios"]["BM_GeometryProfile/101"]["ratio"].get<double>(), 0.0);
+  fs::remove_all(dir);
+}
+
 }  // namespace

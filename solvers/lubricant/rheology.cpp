@@ -1,0 +1,20 @@
+#include "rheology.h"
+
+#include <cmath>
+
+namespace gearbench::lubricant {
+
+double barus_viscosity(double eta0, double alpha, double p) { return eta0 * std::exp(alpha * p); }
+
+double roelands_viscosity(double eta0, double z, double p) {
+  return eta0 * std::exp((std::log(eta0) + roelands_ln_eta_inf) *
+                         (-1.0 + std::pow(1.0 + p / roelands_p0, z)));
+}
+
+double roelands_z_from_alpha(double eta0, double alpha) {
+  return alpha * roelands_p0 / (std::log(eta0) + roelands_ln_eta_inf);
+}
+
+double dowson_higginson_density_ratio(double p) { return (5.9e8 + 1.34 * p) / (5.9e8 + p); }
+
+}  // namespace gearbench::lubricant

@@ -1,0 +1,26 @@
+#pragma once
+// Pressure dependence of a lubricant's viscosity and density (isothermal), each a small
+// function citing its source. Pressures in Pa, viscosities in Pa·s.
+
+namespace gearbench::lubricant {
+
+/// Roelands' reference pressure p0 = 1.96e8 Pa (Roelands, 1966).
+inline constexpr double roelands_p0 = 1.96e8;
+/// −ln η∞ with η∞ = 6.31e-5 Pa·s, the Roelands asymptotic viscosity (Roelands, 1966).
+inline constexpr double roelands_ln_eta_inf = 9.67;
+
+/// Barus (1893): η = η0·exp(α·p).
+double barus_viscosity(double eta0, double alpha, double p);
+
+/// Roelands (1966), as written by Venner & Lubrecht (2000):
+///   η = η0·exp{(ln η0 + 9.67)·[−1 + (1 + p/p0)^z]},  p0 = 1.96e8 Pa.
+double roelands_viscosity(double eta0, double z, double p);
+
+/// The Roelands index that matches the Barus pressure–viscosity coefficient at p = 0:
+///   z = α·p0/(ln η0 + 9.67)  (d ln η/dp at p = 0 equals α).
+double roelands_z_from_alpha(double eta0, double alpha);
+
+/// Dowson & Higginson (1966) compressibility: ρ/ρ0 = (5.9e8 + 1.34·p)/(5.9e8 + p), p in Pa.
+double dowson_higginson_density_ratio(double p);
+
+}  // namespace gearbench::lubricant
