@@ -1,0 +1,67 @@
+#include "pair_stiffness.h"
+
+#include <cmath>
+
+#include "hertz.h"
+
+namespace gearbench::stiffness {
+
+double PairCompliance::total() const {
+  return hertz + tooth[0].sum() + tooth[1].sum() + foundation[0] + foundation[1];
+}
+
+PairStiffness::PairStiffness(const geometry::GearPairGeometry& geometry,
+                             const std::array<model::Material, 2>& materials, BeamStart start,
+                             const std::array<double, 2>& bore_radii,
+                             const std::optional<GearCrack>& crack, bool with_foundation)
+    : geometry_(geometry), with_foundation_(with_foundation) {
+  teeth_.reserve(2);
+  for (int gear = 0; gear < 2; ++gear) {
+    const auto i = static_cast<std::size_t>(gear);
+    ToothProfile profile(geometry, gear, start);
+    foundation_[i] = foundation_parameters(profile, bore_radii[i], materials[i].youngs_modulus, 1.0);
+    if (with_foundation_)
+      for (auto& w : foundation_validity_warnings(foundation_[i], gear)) warnings_.push_back(std::move(w));
+    const bool cracked = crack && crack->gear == gear;
+    teeth_.emplace_back(std::move(profile), materials[i], 1.0,
+                        cracked ? std::optional<Crack>(crack->crack) : std::nullopt);
+  }
+  hertz_per_width_ = hertz_stiffness(materials[0], materials[1], 1.0);
+}
+
+// Roll angle of each flank at s: ψ1 = s/R_b1 on the pinion, ψ2 = (T1T2 − s)/R_b2 on the wheel.
+double PairStiffness::roll_angle(int gear, double s) const {
+  const double rb = geometry_.radii(gear).base;
+  return gear == 0 ? s / rb : (geometry_.path().T2 - s) / rb;
+}
+
+PairCompliance PairStiffness::compliance(double s) const {
+  PairCompliance c;
+  c.hertz = 1.0 / hertz_per_width_;
+  for (int gear = 0; gear < 2; ++gear) {
+    const auto i = static_cast<std::size_t>(gear);
+    const double psi = roll_angle(gear, s);
+    c.tooth[i] = teeth_[i].at(psi);
+    if (with_foundation_)
+      c.foundation[i] = foundation_compliance(foundation_[i], teeth_[i].profile().involute_point(psi));
+  }
+  return c;
+}
+
+double PairStiffness::stiffness_per_width(double s) const {
+  const auto& p = geometry_.path();
+  if (s < p.A || s > p.E) return 0.0;
+  return 1.0 / compliance(s).total();
+}
+
+double StiffnessLoadSharing::share(const geometry::GearPairGeometry& g, double s) const {
+  const auto& p = g.path();
+  if (s < p.A || s > p.E) return 0.0;
+  const double pb = g.base_pitch_transverse();
+  double total = 0.0;
+  for (double t = s - std::floor((s - p.A) / pb) * pb; t <= p.E; t += pb)
+    total += pair_.stiffness_per_width(t);
+  return pair_.stiffness_per_width(s) / total;
+}
+
+}  // namespace gearbench::stiffness
