@@ -44,8 +44,8 @@ Comparison compare_reports(const json& before, const json& after) {
     const json& now = it->second;
     if (old["value"] != now["value"])
       out.changed.push_back(fmt::format("{}: {} -> {}", id, show(old["value"]), show(now["value"])));
-    if (old["status"] == "pass" && now["status"] != "pass") out.regressions.push_back(id);
-    if (old["status"] != "pass" && now["status"] == "pass") out.fixed.push_back(id);
+    if (old["status"] != "fail" && now["status"] == "fail") out.regressions.push_back(id);
+    if (old["status"] == "fail" && now["status"] != "fail") out.fixed.push_back(id);
     if (out.same_machine && old["seconds"].is_number() && now["seconds"].is_number()) {
       const double t0 = old["seconds"].get<double>();
       const double t1 = now["seconds"].get<double>();

@@ -28,10 +28,20 @@ struct CheckRecord {
   double seconds = 0.0;
   nlohmann::json diagnostics = nlohmann::json::object();
   std::string error;          ///< set when the check threw instead of producing a value
+  /// A seed reproduction: reference_value is the paper's figure. Missing it is recorded
+  /// and explained, not a failure; drifting from the figure reached when the gap was
+  /// analysed (`recorded`, within `recorded_tolerance` relative) is.
+  bool reproduction = false;
+  double recorded = 0.0;
+  double recorded_tolerance = 0.0;
 
   [[nodiscard]] double abs_error() const;
   [[nodiscard]] double rel_error() const;
+  /// Within tolerance of the reference (for a reproduction: the paper's figure reproduced).
   [[nodiscard]] bool passed() const;
+  /// What gates: a check outside tolerance, a reproduction that drifted, or an error.
+  [[nodiscard]] bool failed() const;
+  [[nodiscard]] std::string status() const;
 };
 
 struct Series {

@@ -30,6 +30,21 @@ TEST(CheckRecord, ToleranceDecides) {
   EXPECT_FALSE(thrown.passed());
 }
 
+TEST(CheckRecord, ReproductionMissIsRecordedNotFailed) {
+  auto r = record("seed", 30.0, 14.3, 0.05);  // paper 14.3, reached 30
+  r.reproduction = true;
+  r.recorded = 30.0;
+  r.recorded_tolerance = 0.01;
+  EXPECT_FALSE(r.passed());
+  EXPECT_FALSE(r.failed());
+  EXPECT_EQ(r.status(), "missed");
+  r.value = 31.0;  // drifted from the recorded figure: a regression
+  EXPECT_TRUE(r.failed());
+  EXPECT_EQ(r.status(), "fail");
+  r.value = r.recorded = 14.5;  // within 5 % of the paper
+  EXPECT_EQ(r.status(), "reproduced");
+}
+
 TEST(ReportJson, NonFiniteBecomesNull) {
   Report r;
   r.tier = "fast";

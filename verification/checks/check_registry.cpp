@@ -39,6 +39,9 @@ reports::CheckRecord run_check(const CheckSpec& check, const CheckContext& conte
   r.unit = check.unit;
   r.tolerance = check.tolerance;
   r.justification = check.justification;
+  r.reproduction = check.recorded.has_value();
+  r.recorded = check.recorded.value_or(0.0);
+  r.recorded_tolerance = check.recorded_tolerance;
   const auto start = std::chrono::steady_clock::now();
   try {
     const CheckValue v = check.run(context);
@@ -61,7 +64,7 @@ reports::Report run_verification(Tier tier, const CheckContext& context,
     report.checks.push_back(run_check(*checks[i], context));
     const auto& r = report.checks.back();
     progress(fmt::format("[{}/{}] {} ... {} ({:.2f} s)", i + 1, checks.size(), r.id,
-                         r.passed() ? "pass" : "FAIL", r.seconds));
+                         r.status(), r.seconds));
   }
   for (const auto* section : Registry::instance().sections(tier)) {
     try {

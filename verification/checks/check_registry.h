@@ -5,6 +5,7 @@
 // touching either.
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,10 @@ struct CheckSpec {
   std::string justification;
   Tier tier = Tier::fast;
   std::function<CheckValue(const CheckContext&)> run;
+  /// Seed reproductions only: the figure reached when the gap to the paper was analysed,
+  /// and the relative drift from it that counts as a regression.
+  std::optional<double> recorded;
+  double recorded_tolerance = 0.0;
 };
 
 /// Adds figures and notes of one report section.

@@ -51,8 +51,10 @@ void register_identity_checks(const SeedCase& c) {
                                                            const reference::InvoluteClosedForm&)> f) {
     const std::string file = c.file;
     Registry::instance().add(CheckSpec{
-        id + name, section, solver, closed_form, std::move(quantity), std::move(unit), {abs, rel},
-        std::move(why), Tier::fast, [file, f](const CheckContext& ctx) {
+        .id = id + name, .section = section, .solver = solver, .reference = closed_form,
+        .quantity = std::move(quantity), .unit = std::move(unit), .tolerance = {abs, rel},
+        .justification = std::move(why), .tier = Tier::fast,
+        .run = [file, f](const CheckContext& ctx) {
           const auto pair = load_pair(ctx, file);
           return f(GearPairGeometry(pair), reference::involute_closed_form(pair));
         }});
@@ -150,21 +152,25 @@ const bool identity_checks_registered = [] {
 // Seed 004 (Liu et al. 2019, table 1): 22/32 teeth, m 2 mm, α 25°, standard gears.
 // The issue states ε_α ≈ 1.454 for this pair; the printed value has three decimals.
 const RegisterCheck seed004_contact_ratio(CheckSpec{
-    "seed004.contact_ratio_transverse", "Seed reproductions: geometry", solver,
-    "seed 004 (issue statement, 3 decimals)", "ε_α of the 22/32, m 2, α 25° pair", "-",
-    {5e-4, 0}, "the stated value 1.454 is rounded to three decimals (±5e-4)", Tier::fast,
-    [](const CheckContext& ctx) {
+    .id = "seed004.contact_ratio_transverse", .section = "Seed reproductions: geometry",
+    .solver = solver, .reference = "seed 004 (issue statement, 3 decimals)",
+    .quantity = "ε_α of the 22/32, m 2, α 25° pair", .unit = "-", .tolerance = {5e-4, 0},
+    .justification = "the stated value 1.454 is rounded to three decimals (±5e-4)",
+    .tier = Tier::fast,
+    .run = [](const CheckContext& ctx) {
       const GearPairGeometry g(load_pair(ctx, "seed004_spur_geometry.json"));
       return CheckValue{g.contact_ratio_transverse(), 1.454};
     }});
 
 // Seed 001 (wind-turbine stage, table 1): a = 476 mm printed to the millimetre.
 const RegisterCheck seed001_center_distance(CheckSpec{
-    "seed001.zero_backlash_center_distance", "Seed reproductions: geometry", solver,
-    "seed 001 table 1 (printed a = 476 mm)",
-    "zero-backlash centre distance from x1 + x2 = 1.5131", "mm", {0.5, 0},
-    "the table prints the centre distance to the millimetre (±0.5 mm)", Tier::fast,
-    [](const CheckContext& ctx) {
+    .id = "seed001.zero_backlash_center_distance", .section = "Seed reproductions: geometry",
+    .solver = solver, .reference = "seed 001 table 1 (printed a = 476 mm)",
+    .quantity = "zero-backlash centre distance from x1 + x2 = 1.5131", .unit = "mm",
+    .tolerance = {0.5, 0},
+    .justification = "the table prints the centre distance to the millimetre (±0.5 mm)",
+    .tier = Tier::fast,
+    .run = [](const CheckContext& ctx) {
       auto pair = load_pair(ctx, "seed001_wind_geometry.json");
       const GearPairGeometry g(pair);
       return CheckValue{g.zero_backlash_center_distance() * 1e3, 476.0,
@@ -174,7 +180,7 @@ const RegisterCheck seed001_center_distance(CheckSpec{
 // Figures and notes: curvature and sliding along the path for seed 004, contact-line
 // length over a mesh cycle for the helical seeds, and what the seed 001 table implies.
 const RegisterSection geometry_section(SectionSpec{
-    "geometry", Tier::fast, [](const CheckContext& ctx, reports::Report& report) {
+    .id = "geometry", .tier = Tier::fast, .add = [](const CheckContext& ctx, reports::Report& report) {
       const GearPairGeometry spur(load_pair(ctx, "seed004_spur_geometry.json"));
       const auto& p = spur.path();
       reports::Series rho1{"ρ1 pinion", {}, {}}, rho2{"ρ2 wheel", {}, {}}, red{"R reduced", {}, {}};

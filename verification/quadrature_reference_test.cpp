@@ -1,0 +1,274 @@
+// Tests of reference/quadrature, the GSL reference for the energy-method tooth model of
+// docs/stiffness-model.md: Tian's closed-form integrands, closed forms for the straight
+// section, the fillet integrated in x, the crack rules, continuity at R_f = R_b, the
+// wheel's roll angle, the Hertz form and the path of contact.
+#include <gtest/gtest.h>
+
+#include <fmt/core.h>
+#include <gsl/gsl_integration.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "quadrature/energy_quadrature.h"
+
+namespace gearbench::reference {
+namespace {
+
+constexpr double deg = M_PI / 180.0;
+using Crack = QuadCrack::Type;
+
+// Seed 003 (Xu et al. 2022): m 2 mm, z 20/25, b 20 mm, α 20°, E 212 GPa, ν 0.289.
+model::GearPair seed003() {
+  model::GearPair g;
+  g.teeth = {20, 25};
+  g.normal_module = 2e-3;
+  g.normal_pressure_angle = 20 * deg;
+  g.face_width = 20e-3;
+  return g;
+}
+
+const model::Material steel{212e9, 0.289, 7850};
+constexpr double L = 20e-3;
+
+// Hand data of the seed 003 pinion: R_b, α_2 = π/(2z) + inv α, R_f.
+const double Rb1 = 20e-3 * std::cos(20 * deg);
+const double alpha2 = M_PI / 40.0 + std::tan(20 * deg) - 20 * deg;
+const double Rf1 = 20e-3 - 2e-3 * 1.25;
+
+QuadCompliance pinion(double s, QuadBeamStart start, const QuadCrack& crack = {},
+                      const model::GearPair& pair = seed003()) {
+  return energy_compliance_quadrature(pair, steel, 0, s, start, crack, L);
+}
+
+// ∫_lo^hi f by GSL's 61-point Gauss-Kronrod rule (a different rule from the reference's).
+template <class Function>
+double integrate(Function f, double lo, double hi) {
+  gsl_function gf{[](double t, void* p) { return (*static_cast<Function*>(p))(t); }, &f};
+  gsl_integration_workspace* work = gsl_integration_workspace_alloc(1000);
+  double result = 0.0, abserr = 0.0;
+  const int status = gsl_integration_qag(&gf, lo, hi, 0.0, 1e-12, 1000, GSL_INTEG_GAUSS61, work,
+                                         &result, &abserr);
+  gsl_integration_workspace_free(work);
+  if (status) throw std::runtime_error("test quadrature failed");
+  return result;
+}
+
+void expect_relative(const QuadCompliance& a, const QuadCompliance& b, double tol) {
+  EXPECT_NEAR(a.bending, b.bending, tol * b.bending);
+  EXPECT_NEAR(a.shear, b.shear, tol * b.shear);
+  EXPECT_NEAR(a.axial, b.axial, tol * b.axial);
+}
+
+void expect_equal(const QuadCompliance& a, const QuadCompliance& b) {
+  EXPECT_EQ(a.bending, b.bending);
+  EXPECT_EQ(a.shear, b.shear);
+  EXPECT_EQ(a.axial, b.axial);
+}
+
+// (a) Tian (2004), base-circle beam, in his angle (the negative of the spec's α, load at
+// −α_1, base circle at α_2). His bending numerator 1 + cos α_1[(α_2 − α)sin α − cos α] is
+// (R_b − x cos α_1)/R_b = M(x)/(F·R_b) with the F_a·h_1 term included, because
+// x_1 cos α_1 − h_1 sin α_1 = R_b; so all three compliances must agree.
+TEST(QuadratureReference, BaseCircleMatchesTianClosedForm) {
+  const double E = steel.youngs_modulus, nu = steel.poisson_ratio;
+  for (double psi : {0.12, 0.25, std::tan(20 * deg), 0.45, 0.6}) {
+    const double a1 = psi - alpha2;
+    const auto d = [&](double a) { return std::sin(a) + (alpha2 - a) * std::cos(a); };
+    const auto n = [&](double a) { return (alpha2 - a) * std::cos(a); };
+    QuadCompliance tian;
+    tian.bending = integrate(
+        [&](double a) {
+          const double m = 1.0 + std::cos(a1) * ((alpha2 - a) * std::sin(a) - std::cos(a));
+          return 3.0 * m * m * n(a) / (2.0 * E * L * std::pow(d(a), 3));
+        },
+        -a1, alpha2);
+    tian.shear = integrate(
+        [&](double a) {
+          return 1.2 * (1.0 + nu) * n(a) * std::pow(std::cos(a1), 2) / (E * L * d(a));
+        },
+        -a1, alpha2);
+    tian.axial = integrate(
+        [&](double a) { return n(a) * std::pow(std::sin(a1), 2) / (2.0 * E * L * d(a)); },
+        -a1, alpha2);
+    SCOPED_TRACE(psi);
+    expect_relative(pinion(Rb1 * psi, QuadBeamStart::base_circle), tian, 1e-9);
+  }
+}
+
+// The straight section (R_f < R_b) adds closed forms to the base-circle beam: constant half
+// thickness h_B on [x_F, x_B], x_F = √(R_f² − h_B²), and M/F = R_b − x cos α_1.
+TEST(QuadratureReference, StraightSectionAddsClosedForm) {
+  const double E = steel.youngs_modulus, G = E / (2.0 * (1.0 + steel.poisson_ratio));
+  const double xB = Rb1 * std::cos(alpha2), hB = Rb1 * std::sin(alpha2);
+  const double xF = std::sqrt(Rf1 * Rf1 - hB * hB), A = 2.0 * hB * L;
+  const double I = std::pow(2.0 * hB, 3) * L / 12.0;
+  for (double psi : {0.15, 0.5}) {
+    const double c = std::cos(psi - alpha2), s = std::sin(psi - alpha2);
+    const QuadCompliance base = pinion(Rb1 * psi, QuadBeamStart::base_circle);
+    const QuadCompliance straight = pinion(Rb1 * psi, QuadBeamStart::straight);
+    const double bending = (std::pow(Rb1 - c * xF, 3) - std::pow(Rb1 - c * xB, 3)) / (3.0 * c * E * I);
+    EXPECT_NEAR(straight.bending - base.bending, bending, 1e-9 * straight.bending);
+    EXPECT_NEAR(straight.shear - base.shear, 1.2 * c * c * (xB - xF) / (G * A), 1e-9 * straight.shear);
+    EXPECT_NEAR(straight.axial - base.axial, s * s * (xB - xF) / (E * A), 1e-9 * straight.axial);
+  }
+}
+
+// The fillet of the improved beam, integrated here in x with the spec's explicit
+// h(x) = h_B + ρ − √(ρ² − (x − x_B)²) on [x_F, x_B], x_F = x_B·R_f/(R_f + ρ).
+TEST(QuadratureReference, FilletMatchesIntegrationInX) {
+  const double E = steel.youngs_modulus, G = E / (2.0 * (1.0 + steel.poisson_ratio));
+  const double xB = Rb1 * std::cos(alpha2), hB = Rb1 * std::sin(alpha2);
+  const double rho = (Rb1 * Rb1 - Rf1 * Rf1) / (2.0 * (Rf1 - hB));
+  const double xF = xB * Rf1 / (Rf1 + rho);
+  const auto t = [&](double x) {
+    return 2.0 * (hB + rho - std::sqrt(rho * rho - (x - xB) * (x - xB)));
+  };
+  const double psi = std::tan(20 * deg), c = std::cos(psi - alpha2), s = std::sin(psi - alpha2);
+  const QuadCompliance base = pinion(Rb1 * psi, QuadBeamStart::base_circle);
+  const QuadCompliance improved = pinion(Rb1 * psi, QuadBeamStart::improved);
+  const double bending = integrate(
+      [&](double x) { return 12.0 * std::pow(Rb1 - c * x, 2) / (E * std::pow(t(x), 3) * L); }, xF, xB);
+  const double shear = integrate([&](double x) { return 1.2 * c * c / (G * t(x) * L); }, xF, xB);
+  const double axial = integrate([&](double x) { return s * s / (E * t(x) * L); }, xF, xB);
+  EXPECT_NEAR(improved.bending - base.bending, bending, 1e-9 * improved.bending);
+  EXPECT_NEAR(improved.shear - base.shear, shear, 1e-9 * improved.shear);
+  EXPECT_NEAR(improved.axial - base.axial, axial, 1e-9 * improved.axial);
+}
+
+// (b) q = 0 is the healthy tooth, bit for bit; a 1 nm crack differs by O(q²), far below
+// the quadrature's 1e-10.
+TEST(QuadratureReference, ZeroLengthCrackIsHealthy) {
+  const QuadContactPath path = contact_path_quadrature(seed003());
+  for (auto start : {QuadBeamStart::base_circle, QuadBeamStart::improved, QuadBeamStart::straight}) {
+    for (auto [type, s] : {std::pair{Crack::pitch, path.end}, std::pair{Crack::root, path.pitch_point}}) {
+      const QuadCompliance healthy = pinion(s, start);
+      expect_equal(pinion(s, start, {type, 0.0, 45 * deg}), healthy);
+      expect_relative(pinion(s, start, {type, 1e-9, 45 * deg}), healthy, 1e-9);
+    }
+  }
+}
+
+// (c) Seed 003's pitch crack (ν = 45°, q = 0, 1, 2, 2.5 mm; 2.5 mm passes the centre
+// line): above the pitch circle every compliance grows with q, below it none changes.
+TEST(QuadratureReference, PitchCrackGrowsAboveAndIsInertBelow) {
+  const QuadContactPath p = contact_path_quadrature(seed003());
+  const std::vector<double> q{0.0, 1e-3, 2e-3, 2.5e-3};
+  for (double s : {0.5 * (p.pitch_point + p.end), p.end}) {
+    QuadCompliance previous = pinion(s, QuadBeamStart::improved);
+    for (std::size_t i = 1; i < q.size(); ++i) {
+      const QuadCompliance k = pinion(s, QuadBeamStart::improved, {Crack::pitch, q[i], 45 * deg});
+      EXPECT_GT(k.bending, previous.bending) << "s = " << s << ", q = " << q[i];
+      EXPECT_GT(k.shear, previous.shear) << "s = " << s << ", q = " << q[i];
+      EXPECT_GT(k.axial, previous.axial) << "s = " << s << ", q = " << q[i];
+      previous = k;
+    }
+  }
+  for (double s : {p.start, 0.5 * (p.start + p.pitch_point)})
+    for (double length : q)
+      expect_equal(pinion(s, QuadBeamStart::improved, {Crack::pitch, length, 45 * deg}),
+                   pinion(s, QuadBeamStart::improved));
+}
+
+// A root crack weakens the beam at every load position, more the longer it is.
+TEST(QuadratureReference, RootCrackGrowsEverywhere) {
+  const QuadContactPath p = contact_path_quadrature(seed003());
+  for (double s : {p.start, p.pitch_point, p.end}) {
+    double previous = pinion(s, QuadBeamStart::improved).bending;
+    for (double length : {0.5e-3, 1e-3, 1.5e-3}) {
+      const double k = pinion(s, QuadBeamStart::improved, {Crack::root, length, 45 * deg}).bending;
+      EXPECT_GT(k, previous) << "s = " << s << ", q = " << length;
+      previous = k;
+    }
+  }
+}
+
+// (d) With z fixed, h_f* moves R_f across R_b by ±1e-6 relative: the improved beam
+// switches from fillet to involute start, the straight one from straight section to
+// involute start; neither may jump.
+TEST(QuadratureReference, ContinuousWhereRootMeetsBaseCircle) {
+  const double s = contact_path_quadrature(seed003()).pitch_point;
+  const auto at_root_radius = [&](double Rf, QuadBeamStart start) {
+    model::GearPair g = seed003();
+    g.dedendum_coef = (20e-3 - Rf) / g.normal_module;
+    return pinion(s, start, {}, g);
+  };
+  for (auto start : {QuadBeamStart::improved, QuadBeamStart::straight}) {
+    const QuadCompliance below = at_root_radius(Rb1 * (1.0 - 1e-6), start);
+    const QuadCompliance above = at_root_radius(Rb1 * (1.0 + 1e-6), start);
+    expect_relative(below, above, 1e-4);
+  }
+}
+
+// The wheel's roll angle ψ2 = (T1T2 − s)/R_b2: in a pair of equal gears the wheel loaded
+// at s is the pinion loaded at T1T2 − s.
+TEST(QuadratureReference, WheelMirrorsPinionInEqualPair) {
+  model::GearPair g = seed003();
+  g.teeth = {25, 25};
+  const QuadContactPath p = contact_path_quadrature(g);
+  for (double s : {p.start, p.pitch_point, 0.3 * p.start + 0.7 * p.end}) {
+    const QuadCompliance wheel =
+        energy_compliance_quadrature(g, steel, 1, s, QuadBeamStart::improved, {}, L);
+    expect_relative(wheel, pinion(p.line_of_action_length - s, QuadBeamStart::improved, {}, g),
+                    1e-11);
+  }
+}
+
+TEST(QuadratureReference, HertzYangSunForm) {
+  const double nu = steel.poisson_ratio, E = steel.youngs_modulus;
+  EXPECT_NEAR(hertz_compliance_quadrature(steel, steel, L), 4.0 * (1.0 - nu * nu) / (M_PI * E * L),
+              1e-15 / (E * L));
+  const model::Material bronze{110e9, 0.34, 8800};
+  EXPECT_NEAR(hertz_compliance_quadrature(steel, bronze, L),
+              0.5 * (hertz_compliance_quadrature(steel, steel, L) +
+                     hertz_compliance_quadrature(bronze, bronze, L)),
+              1e-15 / (E * L));
+}
+
+// The tip roll limits by Brent against the textbook: E = √(R_a1² − R_b1²) and
+// E − A = ε_α·p_bt with ε_α = 1.58424 by hand for seed 003 (R_a 22 and 27 mm).
+TEST(QuadratureReference, PathOfContact) {
+  const QuadContactPath p = contact_path_quadrature(seed003());
+  const double Rb2 = 25e-3 * std::cos(20 * deg), pbt = M_PI * 2e-3 * std::cos(20 * deg);
+  EXPECT_NEAR(p.end, std::sqrt(22e-3 * 22e-3 - Rb1 * Rb1), 1e-15);
+  EXPECT_NEAR(p.start, p.line_of_action_length - std::sqrt(27e-3 * 27e-3 - Rb2 * Rb2), 1e-15);
+  EXPECT_NEAR(p.line_of_action_length, 45e-3 * std::sin(20 * deg), 1e-15);
+  EXPECT_NEAR((p.end - p.start) / pbt, 1.58424, 1e-5);
+}
+
+TEST(QuadratureReference, RejectsLoadsOffTheFlankAndCutThroughSections) {
+  const model::GearPair g = seed003();
+  const QuadContactPath p = contact_path_quadrature(g);
+  EXPECT_THROW(pinion(1.01 * p.end, QuadBeamStart::improved), std::domain_error);
+  EXPECT_THROW(pinion(p.end, QuadBeamStart::improved, {Crack::pitch, 10e-3, 45 * deg}),
+               std::domain_error);
+  EXPECT_THROW(pinion(p.end, QuadBeamStart::improved, {Crack::root, -1e-3, 45 * deg}),
+               std::invalid_argument);
+  EXPECT_THROW(energy_compliance_quadrature(g, steel, 2, p.end, QuadBeamStart::improved, {}, L),
+               std::invalid_argument);
+  model::GearPair big = g;  // z = 60: R_f = 57.5 mm > R_b = 56.38 mm
+  big.teeth = {60, 60};
+  EXPECT_THROW(pinion(1e-4, QuadBeamStart::improved, {}, big), std::domain_error);
+}
+
+// Prints the seed 003 pinion's healthy compliances at C and E for cross-checking.
+TEST(QuadratureReference, PrintSeed003Pinion) {
+  const QuadContactPath p = contact_path_quadrature(seed003());
+  fmt::print("seed 003 pinion, L = 20 mm, T1C = {:.9f} mm, T1E = {:.9f} mm\n",
+             p.pitch_point * 1e3, p.end * 1e3);
+  const std::pair<const char*, QuadBeamStart> starts[] = {{"base_circle", QuadBeamStart::base_circle},
+                                                          {"improved", QuadBeamStart::improved},
+                                                          {"straight", QuadBeamStart::straight}};
+  for (auto [name, start] : starts)
+    for (auto [where, s] : {std::pair{"C", p.pitch_point}, std::pair{"E", p.end}}) {
+      const QuadCompliance k = pinion(s, start);
+      fmt::print("  {:<11} at {}: 1/k_b = {:.12e}  1/k_s = {:.12e}  1/k_a = {:.12e} m/N\n", name,
+                 where, k.bending, k.shear, k.axial);
+      EXPECT_GT(k.bending, 0.0);
+    }
+  fmt::print("  Hertz 1/k_h = {:.12e} m/N\n", hertz_compliance_quadrature(steel, steel, L));
+}
+
+}  // namespace
+}  // namespace gearbench::reference
