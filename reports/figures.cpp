@@ -31,7 +31,8 @@ bool render_svg(const Figure& figure, const std::string& svg_path) {
        << "set title " << quoted(figure.title) << " noenhanced\n"
        << "set xlabel " << quoted(figure.xlabel) << " noenhanced\n"
        << "set ylabel " << quoted(figure.ylabel) << " noenhanced\n"
-       << "set grid\nset key below noenhanced\n";
+       << "set grid\nset key below noenhanced\n"
+       << (figure.log_y ? "set logscale y\n" : "");
     for (std::size_t i = 0; i < figure.series.size(); ++i) {
       gp << "$d" << i << " << EOD\n";
       const auto& s = figure.series[i];

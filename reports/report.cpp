@@ -162,6 +162,7 @@ json to_json(const Report& report) {
     }
     figures.push_back({{"id", f.id}, {"section", f.section}, {"title", f.title},
                        {"xlabel", f.xlabel}, {"ylabel", f.ylabel}, {"series", series},
+                       {"log_y", f.log_y},
                        {"file", "figures/" + f.id + ".svg"}});
   }
   json notes = json::array();

@@ -57,6 +57,7 @@ struct Figure {
   std::string xlabel;
   std::string ylabel;
   std::vector<Series> series;
+  bool log_y = false;
 };
 
 /// Free text for a section (e.g. what a seed reproduction reached and why it differs).

@@ -81,6 +81,7 @@ json run_stiffness(const json& case_json) {
       {"mesh_position_rad", vector_json(r.mesh_position)},
       {"mesh_stiffness_N_per_m", vector_json(r.mesh_stiffness)},
       {"mesh_stiffness_mean_N_per_m", r.mean},
+      {"healthy_mesh_stiffness_N_per_m", vector_json(r.healthy_mesh_stiffness)},
       {"mesh_stiffness_min_N_per_m", r.min},
       {"mesh_stiffness_max_N_per_m", r.max},
       {"mesh_stiffness_mean_N_per_mm_um", r.mean * per_face_width},

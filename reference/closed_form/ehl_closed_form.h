@@ -16,6 +16,8 @@
 // !! SOURCE. docs/research/ehl.md §1 tags them [NOT FOUND] (quoted from memory of the
 // !! literature; the paper was not readable). Use them as a ±35 % sanity band only.
 
+#include <numbers>
+
 namespace gearbench::reference {
 
 /// Inputs of a smooth, steady line contact.
@@ -30,6 +32,8 @@ struct LineContact {
 };
 
 // ---- Dimensionless groups -------------------------------------------------------------
+// Definitions (docs/research/ehl.md, Notation, §3 and §5; Venner & Lubrecht, Multilevel
+// Methods in Lubrication, Elsevier 2000): exact by definition, no accuracy to state.
 
 /// ū = (u1 + u2)/2 [m/s].
 double mean_speed(const LineContact& c);
@@ -51,6 +55,8 @@ double venner_alpha_bar(const LineContact& c);
 double venner_lambda_bar(const LineContact& c);
 
 // ---- Hertz line contact ----------------------------------------------------------------
+// Hertz (1882); Johnson, Contact Mechanics (CUP 1985), pp. 99–104. Exact for frictionless
+// linear-elastic half-spaces (b ≪ R); no error figure stated.
 
 /// Half-width b = R·√(8W/π) [m].
 double hertz_half_width(const LineContact& c);
@@ -60,6 +66,9 @@ double hertz_max_pressure(const LineContact& c);
 double hertz_pressure(const LineContact& c, double x);
 
 // ---- Regression fits (film over reduced radius, H = h/R) -------------------------------
+// Dowson & Higginson, Elasto-hydrodynamic Lubrication (1966/1977); Dowson & Toyoda, Proc.
+// 5th Leeds–Lyon Symp. (1978/79); Pan & Hamrock, J. Tribol. 111 (1989) 246 (UNVERIFIED).
+// U uses the mean speed (ehl.md §2 [CONSISTENCY]). Accuracy not stated for any of them.
 
 /// Dowson–Higginson minimum film H_min = 2.65·U^0.70·G^0.54·W^−0.13.
 double dowson_higginson_H_min(double U, double G, double W);
@@ -77,6 +86,8 @@ double pan_hamrock_h_min(const LineContact& c);
 double pan_hamrock_h_c(const LineContact& c);
 
 // ---- Moes line-contact film (H = (h/R)·U_Σ^(−1/2), the film where dp/dx = 0) ------------
+// Moes (1992) as given by Venner & Lubrecht (2000); docs/research/ehl.md §3 (H_RI exact,
+// coefficients [CONSISTENCY]: within 0–9 % of Dowson–Toyoda). Accuracy not stated.
 
 /// Moes' four asymptotes: rigid-isoviscous, elastic-isoviscous, rigid-piezoviscous,
 /// elastic-piezoviscous.
@@ -97,9 +108,11 @@ double moes_H_to_metres(double H, const LineContact& c);
 double metres_to_moes_H(double h, const LineContact& c);
 
 // ---- Rigid cylinder, isoviscous (Martin) -----------------------------------------------
-//
 // Reynolds' equation integrated once, p' = 6η0(u1 + u2)(h − h*)/h³ with h = h0 + x²/(2R),
 // p(−∞) = 0. Lengths are scaled by √(2Rh0), films by h0, pressures by η0·ū·√(2Rh0)/h0².
+// Martin, Engineering 102 (1916) 119 (not read); constants from docs/research/ehl.md §4
+// [CONFIRMED-DERIVED]. Accuracy: exact for the model (rigid, isoviscous, flooded, h0 ≪ R),
+// printed constants to the digits shown.
 
 /// Printed constants (docs/research/ehl.md §4), for the Reynolds (cavitation) outlet.
 inline constexpr double martin_load_constant = 4.8950;   ///< w·h0/(η0·ū·R), ū the mean speed
@@ -129,9 +142,11 @@ RigidIsoviscousSolution rigid_isoviscous_reynolds();
 RigidIsoviscousSolution rigid_isoviscous_half_sommerfeld();
 
 // ---- Rigid pure squeeze, cylinder on a plane, isoviscous, flooded ----------------------
+// Derived here from d/dx(h³p'/(12η)) = ḣ0, h = h0 + x²/(2R), p(±∞) = 0 (derivation in the
+// .cpp; no printed source checked). Exact for the model (no cavitation, h0 ≪ R).
 
 /// w = squeeze_load_constant·η·R^(3/2)·(−ḣ0)/h0^(3/2), squeeze_load_constant = 3√2·π.
-inline constexpr double squeeze_load_constant = 13.328648814475099;
+inline constexpr double squeeze_load_constant = 3.0 * std::numbers::sqrt2 * std::numbers::pi;
 /// Pressure p(x) = 6·η·R·(−ḣ0)/h(x)², h = h0 + x²/(2R) [Pa]; ḣ0 < 0 when approaching.
 double squeeze_pressure(double radius, double viscosity, double h0, double h0_rate, double x);
 /// Load per unit length [N/m].

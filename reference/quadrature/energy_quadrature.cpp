@@ -18,9 +18,9 @@ namespace gearbench::reference {
 namespace {
 
 constexpr double quadrature_relative_error = 1e-10;
-constexpr double root_tolerance = 1e-14;      // absolute, in the root's own unit (rad)
+constexpr double root_tolerance = 1e-14;        // absolute, in the root's own unit (rad)
 constexpr std::size_t quadrature_limit = 1000;  // subintervals per qagp call
-constexpr double shear_factor = 1.2;          // spec, "Energies and compliances"
+constexpr double shear_factor = 1.2;            // spec, "Energies and compliances"
 
 void throw_on_gsl_error(int status, const std::string& what) {
   if (status != GSL_SUCCESS) throw std::runtime_error(what + ": " + gsl_strerror(status));
@@ -55,10 +55,10 @@ double integrate_with_breaks(Function& f, std::vector<double> pts) {
   std::unique_ptr<gsl_integration_workspace, decltype(&gsl_integration_workspace_free)> work(
       gsl_integration_workspace_alloc(quadrature_limit), &gsl_integration_workspace_free);
   double result = 0.0, abserr = 0.0;
-  throw_on_gsl_error(gsl_integration_qagp(&gf, pts.data(), pts.size(), 0.0,
-                                          quadrature_relative_error, quadrature_limit,
-                                          work.get(), &result, &abserr),
-                     "GSL qagp");
+  throw_on_gsl_error(
+      gsl_integration_qagp(&gf, pts.data(), pts.size(), 0.0, quadrature_relative_error,
+                           quadrature_limit, work.get(), &result, &abserr),
+      "GSL qagp");
   return result;
 }
 
@@ -68,6 +68,7 @@ double involute_function(double alpha) { return std::tan(alpha) - alpha; }
 
 // Spec, "Per-gear data".
 struct Tooth {
+  double z;              // number of teeth
   double R, Rb, Rf, Ra;  // reference, base, root and tip radii
   double alpha2;         // half tooth angle at the base circle
 };
@@ -80,6 +81,7 @@ Tooth tooth_of(const model::GearPair& pair, int gear) {
   const double z = pair.teeth[gear];
   const double x = pair.profile_shift[gear];
   Tooth t{};
+  t.z = z;
   t.R = z * mn / std::cos(beta) / 2.0;
   t.Rb = t.R * std::cos(at);
   t.Rf = t.R - mn * (pair.dedendum_coef - x);
@@ -140,30 +142,51 @@ Section section_at(const Beam& b, PieceKind kind, double u) {
   return {involute_x(b.tooth, u), involute_h(b.tooth, u), involute_dx(b.tooth, u)};
 }
 
-// Spec, "Where the beam starts": the piece below B (if any) and the involute up to α_1.
+// Spec, "improved" for R_f < R_b: the arc centred at (x_B, h_B + ρ) joins B to the root
+// circle, which it touches at φ_F with (sin φ_F, cos φ_F) = (x_B, h_B + ρ)/(R_f + ρ). The
+// polar angle atan(h/x) grows along the arc; if it passes the tooth-space centre line, π/z,
+// before φ_F (small z), the beam starts at that crossing (gearbench choice).
+void add_fillet(Beam& b) {
+  const Tooth& t = b.tooth;
+  b.rho = (t.Rb * t.Rb - t.Rf * t.Rf) / (2.0 * (t.Rf - b.hB));
+  const auto beyond_space_centre = [&](double phi) {
+    const Section s = section_at(b, PieceKind::fillet, phi);
+    return std::atan2(s.h, s.x) - M_PI / t.z;
+  };
+  double phi0 = std::atan2(b.xB, b.hB + b.rho);
+  if (beyond_space_centre(phi0) > 0.0) {
+    if (beyond_space_centre(0.0) >= 0.0)
+      throw std::domain_error("the tooth is wider than its pitch at the base circle");
+    phi0 = brent_root(beyond_space_centre, 0.0, phi0);
+  }
+  b.pieces.push_back({PieceKind::fillet, 0.0, phi0});
+  const Section foot = section_at(b, PieceKind::fillet, phi0);
+  b.x0 = foot.x;
+  b.h0 = foot.h;
+}
+
+// Spec, "straight" for R_f < R_b: constant half thickness h_B from x_F = √(R_f² − h_B²) to B.
+void add_straight_section(Beam& b) {
+  b.x0 = std::sqrt(b.tooth.Rf * b.tooth.Rf - b.hB * b.hB);
+  b.pieces.push_back({PieceKind::straight, b.x0, b.xB});
+}
+
+// Spec, "Where the beam starts": the piece below B (if any), then the involute up to α_1.
 Beam beam_of(const Tooth& t, QuadBeamStart start, double alpha1) {
-  Beam b{t, t.Rb * std::cos(t.alpha2), t.Rb * std::sin(t.alpha2), 0.0, 0.0, 0.0, {}};
-  b.x0 = b.xB;
-  b.h0 = b.hB;
+  const double xB = t.Rb * std::cos(t.alpha2), hB = t.Rb * std::sin(t.alpha2);
+  Beam b{t, xB, hB, 0.0, xB, hB, {}};  // base_circle: the beam starts at B
   double involute_start = -t.alpha2;
-  if (start != QuadBeamStart::base_circle && t.Rf >= t.Rb) {
-    involute_start = involute_angle_at_radius(t, t.Rf);  // x(α_0)² + h(α_0)² = R_f²
-    b.x0 = involute_x(t, involute_start);
-    b.h0 = involute_h(t, involute_start);
-  } else if (start != QuadBeamStart::base_circle) {
-    if (t.Rf <= b.hB) throw std::domain_error("root circle too small for the beam model");
-    if (start == QuadBeamStart::improved) {
-      // Arc centred at (x_B, h_B + ρ), tangent to the root circle at φ_F, where
-      // (sin φ_F, cos φ_F) = (x_B, h_B + ρ)/(R_f + ρ).
-      b.rho = (t.Rb * t.Rb - t.Rf * t.Rf) / (2.0 * (t.Rf - b.hB));
-      const double phiF = std::atan2(b.xB, b.hB + b.rho);
-      b.pieces.push_back({PieceKind::fillet, 0.0, phiF});
-      const Section foot = section_at(b, PieceKind::fillet, phiF);
-      b.x0 = foot.x;
-      b.h0 = foot.h;
-    } else {  // straight: constant half thickness h_B from x_F = √(R_f² − h_B²)
-      b.x0 = std::sqrt(t.Rf * t.Rf - b.hB * b.hB);
-      b.pieces.push_back({PieceKind::straight, b.x0, b.xB});
+  if (start != QuadBeamStart::base_circle) {
+    if (t.Rf >= t.Rb) {  // the beam starts on the involute at the root circle
+      involute_start = involute_angle_at_radius(t, t.Rf);
+      b.x0 = involute_x(t, involute_start);
+      b.h0 = involute_h(t, involute_start);
+    } else if (t.Rf <= hB) {
+      throw std::domain_error("root circle too small for the beam model");
+    } else if (start == QuadBeamStart::improved) {
+      add_fillet(b);
+    } else {
+      add_straight_section(b);
     }
   }
   if (alpha1 < involute_start) throw std::domain_error("load point below the beam start");
@@ -180,7 +203,7 @@ struct CrackLine {
 };
 
 CrackLine crack_line(const Beam& b, const QuadCrack& crack, double alpha1) {
-  if (!(crack.length >= 0.0)) throw std::invalid_argument("crack length must be ≥ 0");
+  if (!(crack.length >= 0.0)) throw std::invalid_argument("crack length must be >= 0");
   if (crack.type == QuadCrack::Type::none || crack.length == 0.0) return {};
   double xm = b.x0, hm = b.h0;  // root crack: mouth at the beam start
   if (crack.type == QuadCrack::Type::pitch) {
@@ -230,9 +253,15 @@ std::vector<double> quadrature_points(const Beam& b, const Piece& p, const Crack
   std::vector<double> breaks;
   if (c.active) {
     switch (p.kind) {
-      case PieceKind::straight: breaks = {c.xc}; break;  // h is constant: no kink
-      case PieceKind::fillet: breaks = crack_breaks_on_fillet(b, c); break;
-      case PieceKind::involute: breaks = crack_breaks_on_involute(b.tooth, p, c); break;
+      case PieceKind::straight:  // h is constant: no kink
+        breaks = {c.xc};
+        break;
+      case PieceKind::fillet:
+        breaks = crack_breaks_on_fillet(b, c);
+        break;
+      case PieceKind::involute:
+        breaks = crack_breaks_on_involute(b.tooth, p, c);
+        break;
     }
   }
   std::vector<double> pts{p.lo};
@@ -279,7 +308,7 @@ void check_arguments(const model::GearPair& pair, const model::Material& m, int 
     throw std::invalid_argument("teeth and normal module must be positive");
   if (!(face_width > 0.0)) throw std::invalid_argument("face width must be positive");
   if (!(m.youngs_modulus > 0.0) || !(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5))
-    throw std::invalid_argument("need E > 0 and −1 < ν < 0.5");
+    throw std::invalid_argument("need E > 0 and -1 < nu < 0.5");
 }
 
 }  // namespace
@@ -335,7 +364,7 @@ QuadContactPath contact_path_quadrature(const model::GearPair& pair) {
   QuadContactPath path;
   path.line_of_action_length = closed.line_of_action_length;
   path.pitch_point = closed.pitch_point_from_T1;
-  std::array<Tooth, 2> teeth{tooth_of(pair, 0), tooth_of(pair, 1)};
+  const std::array<Tooth, 2> teeth{tooth_of(pair, 0), tooth_of(pair, 1)};
   for (int gear : {0, 1})
     path.tip_roll_angle[gear] =
         involute_angle_at_radius(teeth[gear], teeth[gear].Ra) + teeth[gear].alpha2;

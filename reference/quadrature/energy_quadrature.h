@@ -31,11 +31,11 @@ struct QuadCompliance {
 
 /// The path of contact, computed here (positions from T1 along the line of action).
 struct QuadContactPath {
-  double line_of_action_length = 0;       ///< T1T2 = a·sin α_wt [m]
-  double pitch_point = 0;                 ///< T1C [m]
+  double line_of_action_length = 0;        ///< T1T2 = a·sin α_wt [m]
+  double pitch_point = 0;                  ///< T1C [m]
   std::array<double, 2> tip_roll_angle{};  ///< ψ_a of pinion and wheel [rad]
-  double start = 0;                       ///< A = T1T2 − R_b2·ψ_a2, the wheel's tip [m]
-  double end = 0;                         ///< E = R_b1·ψ_a1, the pinion's tip [m]
+  double start = 0;                        ///< A = T1T2 − R_b2·ψ_a2, the wheel's tip [m]
+  double end = 0;                          ///< E = R_b1·ψ_a1, the pinion's tip [m]
 };
 
 /// Tooth compliance of gear `gear` (0 = pinion, 1 = wheel) when the pair is in contact at

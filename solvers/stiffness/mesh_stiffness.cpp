@@ -18,9 +18,18 @@ void MeshStiffnessOptions::validate() const {
     throw InputError(fmt::format("path_points = {}: allowed range is [2, 100000]", path_points));
   if (slices < 1 || slices > 10000)
     throw InputError(fmt::format("slices = {}: allowed range is [1, 10000]", slices));
+  if (spline_nodes < 4 || spline_nodes > 1000000)
+    throw InputError(fmt::format("spline_nodes = {}: allowed range is [4, 1000000]", spline_nodes));
   if (crack && (crack->gear < 0 || crack->gear > 1))
     throw InputError(fmt::format("crack.gear = {}: allowed values are 1, 2", crack->gear + 1));
 }
+
+namespace {
+void reject_helical_crack(const geometry::GearPairGeometry& g, const MeshStiffnessOptions& o) {
+  if (o.crack && g.base_helix_angle() > 0.0)
+    throw InputError("crack: cracks are modelled for spur gears only (helix_angle_deg must be 0)");
+}
+}  // namespace
 
 double MeshStiffnessResult::mean_per_face_width() const {
   return mean / (face_width_total * 1e3) * 1e-6;
@@ -30,8 +39,24 @@ MeshStiffness::MeshStiffness(const geometry::GearPairGeometry& geometry,
                              const std::array<model::Material, 2>& materials,
                              MeshStiffnessOptions options)
     : geometry_(geometry),
-      options_((options.validate(), std::move(options))),
-      pair_(geometry, materials, options_.beam_start, bore_radii(), options_.crack, options_.foundation) {}
+      options_((options.validate(), reject_helical_crack(geometry, options), std::move(options))),
+      pair_(geometry, materials, options_.beam_start, bore_radii(), options_.crack, options_.foundation) {
+  if (geometry_.base_helix_angle() > 0.0 && options_.slices > 1) {
+    const auto& p = geometry_.path();
+    std::vector<double> s(static_cast<std::size_t>(options_.spline_nodes)), k(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      s[i] = p.A + (p.E - p.A) * static_cast<double>(i) / static_cast<double>(s.size() - 1);
+      k[i] = pair_.stiffness_per_width(s[i], true);
+    }
+    healthy_curve_.emplace(std::move(s), std::move(k));
+  }
+}
+
+double MeshStiffness::pair_stiffness_per_width(double s, bool healthy) const {
+  const auto& p = geometry_.path();
+  if (!healthy || !healthy_curve_ || s < p.A || s > p.E) return pair_.stiffness_per_width(s, healthy);
+  return (*healthy_curve_)(s);
+}
 
 // Default bore: half the root radius (h_f = 2, inside Sainsot's fitted range).
 std::array<double, 2> MeshStiffness::bore_radii() const {
@@ -74,12 +99,15 @@ void MeshStiffness::single_pair_curve(MeshStiffnessResult& r) const {
   }
 }
 
-double MeshStiffness::transverse_stiffness_per_width(double s0) const {
+double MeshStiffness::transverse_stiffness_per_width(double s0, bool cracked_reference) const {
   const auto& p = geometry_.path();
   const double pb = geometry_.base_pitch_transverse();
+  const double first = s0 - std::floor((s0 - p.A) / pb) * pb;
   double k = 0.0;
-  for (double s = s0 - std::floor((s0 - p.A) / pb) * pb; s <= p.E; s += pb)
-    k += pair_.stiffness_per_width(s);
+  for (double s = first; s <= p.E; s += pb) {
+    const bool is_reference = std::abs(s - s0) < 0.5 * pb;
+    k += pair_stiffness_per_width(s, !(cracked_reference && is_reference));
+  }
   return k;
 }
 
@@ -92,13 +120,19 @@ void MeshStiffness::mesh_cycle(MeshStiffnessResult& r) const {
   const double tan_bb = std::tan(geometry_.base_helix_angle());
   const double halves = geometry_.pair().herringbone ? 2.0 : 1.0;
   const double rb1 = geometry_.radii(0).base;
+  // A cracked tooth is followed through its engagement A..E; healthy teeth repeat every
+  // base pitch, so one mesh cycle [A, A + p_bt) says everything.
+  const bool cracked = pair_.cracked();
+  const double span = cracked ? geometry_.path().E - geometry_.path().A : pb;
+  const int last = cracked ? options_.positions - 1 : options_.positions;
   for (int i = 0; i < options_.positions; ++i) {
-    const double s0 = geometry_.path().A + pb * i / options_.positions;
+    const double s0 = geometry_.path().A + span * i / last;
     double k = 0.0;
     for (int j = 0; j < r.slices; ++j)
-      k += slice_width * transverse_stiffness_per_width(s0 - (j + 0.5) * slice_width * tan_bb);
+      k += slice_width * transverse_stiffness_per_width(s0 - (j + 0.5) * slice_width * tan_bb, cracked);
     r.mesh_position.push_back((s0 - geometry_.path().A) / rb1);
     r.mesh_stiffness.push_back(halves * k);
+    if (cracked) r.healthy_mesh_stiffness.push_back(b * transverse_stiffness_per_width(s0, false));
   }
   const auto [lo, hi] = std::minmax_element(r.mesh_stiffness.begin(), r.mesh_stiffness.end());
   r.min = *lo;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geometry/gear_pair_geometry.h"
+#include "cubic_spline.h"
 #include "pair_stiffness.h"
 
 namespace gearbench::stiffness {
@@ -19,6 +20,7 @@ struct MeshStiffnessOptions {
   int positions = 360;            ///< mesh positions over one mesh cycle
   int path_points = 201;          ///< points of the single-pair curve along A..E
   int slices = 50;                ///< face-width slices of a helical pair (spur: 1)
+  int spline_nodes = 1025;        ///< sliced pairs: nodes of the single-pair spline on A..E
   bool foundation = true;         ///< include the Sainsot fillet foundation
   std::optional<std::array<double, 2>> bore_radius;  ///< r_int [m]; default r_f/2
   std::optional<GearCrack> crack;
@@ -28,9 +30,12 @@ struct MeshStiffnessOptions {
 };
 
 struct MeshStiffnessResult {
-  // One mesh cycle: the pinion turns 2π/z1; position 0 is a pair entering contact at A.
+  // Healthy teeth: one mesh cycle (the pinion turns 2π/z1), position 0 a pair entering
+  // contact at A. With a crack: the cracked tooth's whole engagement A..E (ε_α cycles),
+  // the cracked pair in series with healthy neighbours.
   std::vector<double> mesh_position;      ///< pinion rotation [rad]
   std::vector<double> mesh_stiffness;     ///< [N/m], all pairs (and slices, halves)
+  std::vector<double> healthy_mesh_stiffness;  ///< with a crack: the same positions, healthy
   // One pair along its path A..E (transverse, whole face width as one slice).
   std::vector<double> path_position;      ///< s from T1 [m]
   std::vector<double> single_pair_stiffness;  ///< [N/m]
@@ -57,12 +62,16 @@ class MeshStiffness {
   void single_pair_curve(MeshStiffnessResult& r) const;
   void mesh_cycle(MeshStiffnessResult& r) const;
   /// Stiffness per unit width of all pairs in contact on a transverse slice whose
-  /// reference contact is at s0.
-  [[nodiscard]] double transverse_stiffness_per_width(double s0) const;
+  /// reference pair is at s0; `cracked_reference` makes that pair the cracked one.
+  [[nodiscard]] double transverse_stiffness_per_width(double s0, bool cracked_reference) const;
+  /// Healthy pair stiffness per width at s: from the cubic spline of the single-pair curve
+  /// for sliced (helical) pairs, where every slice revisits the same curve, else direct.
+  [[nodiscard]] double pair_stiffness_per_width(double s, bool healthy) const;
 
   const geometry::GearPairGeometry& geometry_;
   MeshStiffnessOptions options_;
   PairStiffness pair_;
+  std::optional<CubicSpline> healthy_curve_;
 };
 
 }  // namespace gearbench::stiffness

@@ -14,7 +14,7 @@ PairStiffness::PairStiffness(const geometry::GearPairGeometry& geometry,
                              const std::array<model::Material, 2>& materials, BeamStart start,
                              const std::array<double, 2>& bore_radii,
                              const std::optional<GearCrack>& crack, bool with_foundation)
-    : geometry_(geometry), with_foundation_(with_foundation) {
+    : geometry_(geometry), with_foundation_(with_foundation), cracked_(crack && crack->crack.length > 0.0) {
   teeth_.reserve(2);
   for (int gear = 0; gear < 2; ++gear) {
     const auto i = static_cast<std::size_t>(gear);
@@ -35,23 +35,23 @@ double PairStiffness::roll_angle(int gear, double s) const {
   return gear == 0 ? s / rb : (geometry_.path().T2 - s) / rb;
 }
 
-PairCompliance PairStiffness::compliance(double s) const {
+PairCompliance PairStiffness::compliance(double s, bool healthy) const {
   PairCompliance c;
   c.hertz = 1.0 / hertz_per_width_;
   for (int gear = 0; gear < 2; ++gear) {
     const auto i = static_cast<std::size_t>(gear);
     const double psi = roll_angle(gear, s);
-    c.tooth[i] = teeth_[i].at(psi);
+    c.tooth[i] = teeth_[i].at(psi, healthy);
     if (with_foundation_)
       c.foundation[i] = foundation_compliance(foundation_[i], teeth_[i].profile().involute_point(psi));
   }
   return c;
 }
 
-double PairStiffness::stiffness_per_width(double s) const {
+double PairStiffness::stiffness_per_width(double s, bool healthy) const {
   const auto& p = geometry_.path();
   if (s < p.A || s > p.E) return 0.0;
-  return 1.0 / compliance(s).total();
+  return 1.0 / compliance(s, healthy).total();
 }
 
 double StiffnessLoadSharing::share(const geometry::GearPairGeometry& g, double s) const {
@@ -60,8 +60,8 @@ double StiffnessLoadSharing::share(const geometry::GearPairGeometry& g, double s
   const double pb = g.base_pitch_transverse();
   double total = 0.0;
   for (double t = s - std::floor((s - p.A) / pb) * pb; t <= p.E; t += pb)
-    total += pair_.stiffness_per_width(t);
-  return pair_.stiffness_per_width(s) / total;
+    total += pair_.stiffness_per_width(t, true);
+  return pair_.stiffness_per_width(s, true) / total;
 }
 
 }  // namespace gearbench::stiffness

@@ -34,10 +34,12 @@ class PairStiffness {
                 BeamStart start, const std::array<double, 2>& bore_radii,
                 const std::optional<GearCrack>& crack, bool with_foundation);
 
-  /// Compliances per unit width with the pair in contact at s (m from T1).
-  [[nodiscard]] PairCompliance compliance(double s) const;
+  /// Compliances per unit width with the pair in contact at s (m from T1); `healthy`
+  /// evaluates a pair of uncracked teeth even when one gear carries a crack.
+  [[nodiscard]] PairCompliance compliance(double s, bool healthy = false) const;
   /// Pair stiffness per unit face width [N/m²] at s; 0 outside A..E.
-  [[nodiscard]] double stiffness_per_width(double s) const;
+  [[nodiscard]] double stiffness_per_width(double s, bool healthy = false) const;
+  [[nodiscard]] bool cracked() const { return cracked_; }
 
   [[nodiscard]] const geometry::GearPairGeometry& geometry() const { return geometry_; }
   [[nodiscard]] const std::vector<std::string>& warnings() const { return warnings_; }
@@ -51,11 +53,12 @@ class PairStiffness {
   std::array<FoundationParameters, 2> foundation_{};
   double hertz_per_width_ = 0.0;
   bool with_foundation_ = true;
+  bool cracked_ = false;
   std::vector<std::string> warnings_;
 };
 
-/// Load sharing in proportion to the pair stiffnesses in contact (spur, transverse plane):
-/// the geometry's load-sharing hook filled by the energy method.
+/// Load sharing in proportion to the pair stiffnesses in contact (spur, transverse plane,
+/// all teeth healthy): the geometry's load-sharing hook filled by the energy method.
 class StiffnessLoadSharing final : public geometry::LoadSharing {
  public:
   explicit StiffnessLoadSharing(const PairStiffness& pair) : pair_(pair) {}

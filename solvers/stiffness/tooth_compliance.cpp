@@ -11,7 +11,8 @@ namespace gearbench::stiffness {
 
 namespace {
 
-// 10-point Gauss–Legendre nodes and weights on [−1, 1] (Abramowitz & Stegun, table 25.4).
+// 10-point Gauss–Legendre nodes and weights on [−1, 1] (Abramowitz & Stegun, table 25.4):
+// exact for polynomials of degree 19, so ~1e-13 relative on a panel of 1/24 of a segment.
 constexpr std::array<double, 5> gl_nodes = {0.1488743389816312, 0.4333953941292472,
                                             0.6794095682990244, 0.8650633666889845,
                                             0.9739065285171717};
@@ -134,9 +135,9 @@ bool ToothCompliance::crack_active(double roll_angle) const {
   return crack_->type == Crack::Type::root || roll_angle > profile_.reference_roll_angle();
 }
 
-ComplianceComponents ToothCompliance::at(double roll_angle) const {
+ComplianceComponents ToothCompliance::at(double roll_angle, bool healthy) const {
   const FlankPoint load = profile_.involute_point(roll_angle);
-  const bool cracked = crack_active(roll_angle);
+  const bool cracked = !healthy && crack_active(roll_angle);
   const Moments m = moments_to(cracked ? cracked_ : healthy_, load.x, cracked);
   const double c = std::cos(load.alpha);
   const double s = std::sin(load.alpha);

@@ -37,8 +37,9 @@ class ToothCompliance {
   ToothCompliance(ToothProfile profile, const model::Material& material, double face_width,
                   const std::optional<Crack>& crack);
 
-  /// Compliances for a load at roll angle ψ on this tooth's flank.
-  [[nodiscard]] ComplianceComponents at(double roll_angle) const;
+  /// Compliances for a load at roll angle ψ on this tooth's flank; `healthy` ignores the
+  /// crack (the uncracked teeth of the same gear).
+  [[nodiscard]] ComplianceComponents at(double roll_angle, bool healthy = false) const;
 
   [[nodiscard]] const ToothProfile& profile() const { return profile_; }
   /// Crack tip half-thickness h_c (negative past the centre line), if cracked.

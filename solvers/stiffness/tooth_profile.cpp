@@ -27,15 +27,29 @@ ToothProfile::ToothProfile(const geometry::GearPairGeometry& pair, int gear, Bea
 
   alpha_start_ = -alpha2_;
   x0_ = xB_;
-  if (start_ == BeamStart::base_circle) return;
-  if (Rf_ >= Rb_) {
+  if (start_ != BeamStart::base_circle && Rf_ >= Rb_)
     // The beam starts on the involute at the root circle: r(α)² = R_b²[1 + (α + α_2)²].
     alpha_start_ = std::sqrt(Rf_ * Rf_ / (Rb_ * Rb_) - 1.0) - alpha2_;
+  tabulate_involute();
+  if (start_ == BeamStart::base_circle) return;
+  if (Rf_ >= Rb_) {
     x0_ = involute_x(alpha_start_);
   } else if (start_ == BeamStart::improved) {
     // Arc centred at (x_B, h_B + ρ), tangent to the root circle (docs/stiffness-model.md).
     rho_ = (Rb_ * Rb_ - Rf_ * Rf_) / (2.0 * (Rf_ - hB_));
     x0_ = xB_ * Rf_ / (Rf_ + rho_);
+    // The fillets of neighbouring teeth meet on the tooth-space centre line (polar angle
+    // π/z): if the arc reaches past it before touching the root circle, the beam starts
+    // where it crosses that line (the polar angle falls monotonically from x_0 to x_B).
+    const double half_pitch_angle = std::numbers::pi / pair.pair().teeth[i];
+    if (std::atan2(half_thickness(x0_), x0_) > half_pitch_angle) {
+      double lo = x0_, hi = xB_;
+      for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * xB_; ++iteration) {
+        const double mid = 0.5 * (lo + hi);
+        (std::atan2(half_thickness(mid), mid) > half_pitch_angle ? lo : hi) = mid;
+      }
+      x0_ = hi;
+    }
   } else {
     x0_ = std::sqrt(Rf_ * Rf_ - hB_ * hB_);  // constant thickness h_B down to the root circle
   }
@@ -54,12 +68,35 @@ FlankPoint ToothProfile::involute_point(double roll_angle) const {
   return {alpha, involute_x(alpha), involute_h(alpha)};
 }
 
-// x(α) increases with α (dx/dα = R_b(α + α_2)cos α ≥ 0): Newton's method kept inside a
-// shrinking bracket [lo, hi], bisecting whenever a step would leave it.
+void ToothProfile::tabulate_involute() {
+  constexpr int intervals = 256;
+  table_x0_ = involute_x(alpha_start_);
+  table_dx_ = (tip_.x - table_x0_) / intervals;
+  alpha_table_.assign(intervals + 1, 0.0);
+  alpha_table_.front() = alpha_start_;
+  alpha_table_.back() = tip_.alpha;
+  // x(α) is monotone: bisection on α fills the table once per tooth.
+  for (int k = 1; k < intervals; ++k) {
+    const double target = table_x0_ + k * table_dx_;
+    double lo = alpha_table_[static_cast<std::size_t>(k - 1)], hi = tip_.alpha;
+    for (int iteration = 0; iteration < 200 && hi - lo > 1e-15; ++iteration) {
+      const double mid = 0.5 * (lo + hi);
+      (involute_x(mid) < target ? lo : hi) = mid;
+    }
+    alpha_table_[static_cast<std::size_t>(k)] = 0.5 * (lo + hi);
+  }
+}
+
+// x(α) increases with α (dx/dα = R_b(α + α_2)cos α ≥ 0): Newton's method kept inside the
+// table's bracket [lo, hi] and started from linear interpolation in it, bisecting whenever
+// a step would leave the bracket.
 double ToothProfile::involute_alpha_at(double x) const {
-  double lo = alpha_start_;
-  double hi = tip_.alpha;
-  double alpha = lo + (hi - lo) * std::clamp((x - involute_x(lo)) / (tip_.x - involute_x(lo)), 0.0, 1.0);
+  const auto last = static_cast<long>(alpha_table_.size()) - 2;
+  const long k = std::clamp(static_cast<long>(std::floor((x - table_x0_) / table_dx_)), 0L, last);
+  double lo = alpha_table_[static_cast<std::size_t>(k)];
+  double hi = alpha_table_[static_cast<std::size_t>(k + 1)];
+  const double fraction = std::clamp((x - table_x0_ - static_cast<double>(k) * table_dx_) / table_dx_, 0.0, 1.0);
+  double alpha = lo + (hi - lo) * fraction;
   for (int iteration = 0; iteration < 100; ++iteration) {
     const double f = involute_x(alpha) - x;
     if (f > 0.0) hi = alpha; else lo = alpha;

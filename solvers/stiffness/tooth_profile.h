@@ -3,6 +3,7 @@
 // half thickness h(x) along the centre line from the beam start x_0 to the tip, on the
 // fillet arc / straight section below the base circle and on the involute above it.
 #include <optional>
+#include <vector>
 
 #include "geometry/gear_pair_geometry.h"
 
@@ -50,7 +51,12 @@ class ToothProfile {
   /// Inverse of x(α) on the involute by safeguarded Newton iteration.
   [[nodiscard]] double involute_alpha_at(double x) const;
 
+  /// α at equally spaced x over the involute part: a tight bracket and start for Newton.
+  void tabulate_involute();
+
   BeamStart start_;
+  std::vector<double> alpha_table_;
+  double table_x0_ = 0.0, table_dx_ = 0.0;
   double Rb_ = 0.0, Rf_ = 0.0, alpha2_ = 0.0;
   double xB_ = 0.0, hB_ = 0.0;  ///< base-circle point
   double x0_ = 0.0;             ///< beam start

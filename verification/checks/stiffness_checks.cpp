@@ -1,0 +1,479 @@
+// Energy-method mesh stiffness against its references: the GSL quadrature of the same
+// energy integrals (reference/quadrature, derived independently in Tian's pressure-angle
+// parametrisation), ISO 6336-1 method B, the model's own continuity and crack behaviour,
+// and the seed 003 reproduction.
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "check_registry.h"
+#include "closed_form/iso6336_stiffness.h"
+#include "model/case_reader.h"
+#include "quadrature/energy_quadrature.h"
+#include "stiffness/mesh_stiffness.h"
+
+namespace gearbench::verification {
+namespace {
+
+using geometry::GearPairGeometry;
+using stiffness::MeshStiffness;
+using stiffness::MeshStiffnessOptions;
+
+const char* section = "Energy-method mesh stiffness";
+const char* seed_section = "Seed reproductions: mesh stiffness (seed 003)";
+const char* solver = "stiffness";
+
+struct StiffnessCase {
+  model::GearPair pair;
+  std::array<model::Material, 2> materials;
+};
+
+StiffnessCase load_case(const CheckContext& ctx, const std::string& file) {
+  const auto json = model::read_json_file(ctx.case_path(file));
+  model::ObjectReader root(json, "");
+  auto c = model::read_gear_case(root);
+  return {c.gear_pair, *c.materials};
+}
+
+StiffnessCase seed003(const CheckContext& ctx) { return load_case(ctx, "seed003_spur_stiffness.json"); }
+
+stiffness::GearCrack pitch_crack(double length_mm) {
+  return {{stiffness::Crack::Type::pitch, length_mm * 1e-3, 45.0 * M_PI / 180.0}, 0};
+}
+
+stiffness::GearCrack root_crack(double length_mm) {
+  return {{stiffness::Crack::Type::root, length_mm * 1e-3, 45.0 * M_PI / 180.0}, 0};
+}
+
+// --- GSL quadrature agreement ------------------------------------------------------------
+
+reference::QuadBeamStart quad_start(stiffness::BeamStart s) {
+  switch (s) {
+    case stiffness::BeamStart::straight: return reference::QuadBeamStart::straight;
+    case stiffness::BeamStart::base_circle: return reference::QuadBeamStart::base_circle;
+    default: return reference::QuadBeamStart::improved;
+  }
+}
+
+/// Largest relative difference of bending, shear and axial compliance between production
+/// and the GSL reference, over both gears and 41 positions along A..E.
+CheckValue quadrature_agreement(const StiffnessCase& c, stiffness::BeamStart start,
+                                const std::optional<stiffness::GearCrack>& crack) {
+  const GearPairGeometry g(c.pair);
+  const stiffness::PairStiffness production(g, c.materials, start,
+                                            {0.5 * g.radii(0).root, 0.5 * g.radii(1).root}, crack, false);
+  reference::QuadCrack qc;
+  if (crack) {
+    qc.type = crack->crack.type == stiffness::Crack::Type::pitch ? reference::QuadCrack::Type::pitch
+                                                                 : reference::QuadCrack::Type::root;
+    qc.length = crack->crack.length;
+    qc.angle = crack->crack.angle;
+  }
+  double worst = 0.0;
+  std::string where;
+  const auto& p = g.path();
+  for (int i = 0; i <= 40; ++i) {
+    const double s = p.A + (p.E - p.A) * i / 40.0;
+    const auto prod = production.compliance(s);
+    for (int gear = 0; gear < 2; ++gear) {
+      const bool cracked_gear = crack && crack->gear == gear;
+      const auto ref = reference::energy_compliance_quadrature(
+          c.pair, c.materials[static_cast<std::size_t>(gear)], gear, s, quad_start(start),
+          cracked_gear ? qc : reference::QuadCrack{}, 1.0);
+      const auto& t = prod.tooth[static_cast<std::size_t>(gear)];
+      for (const auto& [name, a, b] : {std::tuple{"bending", t.bending, ref.bending},
+                                       std::tuple{"shear", t.shear, ref.shear},
+                                       std::tuple{"axial", t.axial, ref.axial}}) {
+        const double rel = std::abs(a - b) / std::abs(b);
+        if (rel > worst) {
+          worst = rel;
+          where = fmt::format("{} of gear {} at s = {:.4f} mm", name, gear + 1, s * 1e3);
+        }
+      }
+    }
+  }
+  return {worst, 0.0, {{"worst", where}, {"positions", 41}}};
+}
+
+const std::string gsl_why =
+    "GSL integrates at 1e-10 relative and production's panelled Gauss–Legendre rule is "
+    "exact to ~1e-12 on smooth pieces; 1e-6 is the issue's bar and leaves room for the "
+    "root-finding of the break points";
+
+void register_quadrature_check(const std::string& tag, stiffness::BeamStart start,
+                               std::optional<stiffness::GearCrack> crack) {
+  Registry::instance().add(CheckSpec{
+      .id = "stiffness.gsl." + tag, .section = section, .solver = solver,
+      .reference = "GSL quadrature (Tian parametrisation)",
+      .quantity = "max relative difference of k_b, k_s, k_a (both gears, 41 positions)",
+      .unit = "-", .tolerance = {1e-6, 0}, .justification = gsl_why, .tier = Tier::fast,
+      .run = [start, crack](const CheckContext& ctx) { return quadrature_agreement(seed003(ctx), start, crack); }});
+}
+
+const bool quadrature_checks = [] {
+  register_quadrature_check("improved", stiffness::BeamStart::improved, std::nullopt);
+  register_quadrature_check("straight", stiffness::BeamStart::straight, std::nullopt);
+  register_quadrature_check("base_circle", stiffness::BeamStart::base_circle, std::nullopt);
+  for (double q : {1.0, 2.0, 2.5})
+    register_quadrature_check(fmt::format("pitch_crack_{}mm", q), stiffness::BeamStart::improved, pitch_crack(q));
+  register_quadrature_check("root_crack_1mm", stiffness::BeamStart::improved, root_crack(1.0));
+  return true;
+}();
+
+// --- ISO 6336-1 method B ----------------------------------------------------------------
+
+struct IsoPair {
+  int z1, z2;
+  double x1, x2;
+};
+// z 17…100 and x −0.3…0.6 wherever the pair is free of undercut and interference.
+const IsoPair iso_pairs[] = {{17, 34, 0.3, 0.0},  {17, 34, 0.6, 0.0},  {25, 50, 0.0, 0.0},
+                             {25, 50, 0.3, 0.0},  {25, 50, 0.6, 0.0},  {40, 80, 0.0, 0.0},
+                             {40, 80, 0.3, 0.0},  {40, 80, 0.6, 0.0},  {60, 100, 0.0, 0.0},
+                             {60, 100, 0.6, 0.0}, {100, 100, -0.3, -0.3}, {100, 100, 0.0, 0.0}};
+
+model::GearPair iso_pair(const IsoPair& p) {
+  model::GearPair g;
+  g.teeth = {p.z1, p.z2};
+  g.normal_module = 2e-3;
+  g.normal_pressure_angle = 20.0 * M_PI / 180.0;
+  g.face_width = 20e-3;
+  g.profile_shift = {p.x1, p.x2};
+  return g;
+}
+
+const std::array<model::Material, 2> steel{model::Material{206e9, 0.3, 7850}, model::Material{206e9, 0.3, 7850}};
+
+/// Mean of the single-pair curve over A..E per face width [N/(mm·µm)].
+double mean_single_pair(const stiffness::MeshStiffnessResult& r, double face_width) {
+  double sum = 0.0;
+  for (double k : r.single_pair_stiffness) sum += k;
+  return sum / static_cast<double>(r.single_pair_stiffness.size()) / (face_width * 1e3) * 1e-6;
+}
+
+double max_single_pair(const stiffness::MeshStiffnessResult& r, double face_width) {
+  return *std::max_element(r.single_pair_stiffness.begin(), r.single_pair_stiffness.end()) /
+         (face_width * 1e3) * 1e-6;
+}
+
+/// ISO 6336-1 defines c′ as the maximum stiffness of a single tooth pair per face width and
+/// c_γα as the mean stiffness of the mesh; the energy method is compared quantity for
+/// quantity. ISO method B is an empirical fit (C_M = 0.8 scales theory to measurement,
+/// C_B corrects the rack), so ±20 % is the band for a theory-against-standard comparison.
+void register_iso_check(const IsoPair& p, bool mesh) {
+  Registry::instance().add(CheckSpec{
+      .id = fmt::format("stiffness.iso6336.{}.z{}_{}_x{}_{}", mesh ? "c_gamma_alpha" : "c_prime",
+                        p.z1, p.z2, p.x1, p.x2),
+      .section = section, .solver = solver,
+      .reference = mesh ? "ISO 6336-1 method B c_γα" : "ISO 6336-1 method B c′",
+      .quantity = fmt::format("{} per face width, z {}/{}, x {}/{}",
+                              mesh ? "mean mesh stiffness" : "max single-pair stiffness", p.z1,
+                              p.z2, p.x1, p.x2),
+      .unit = "N/(mm·µm)", .tolerance = {0, 0.2},
+      .justification = "ISO method B is an empirical fit (C_M = 0.8 scales theory to "
+                       "measurement): ±20 % is the band for theory against the standard",
+      .tier = Tier::fast, .run = [p, mesh](const CheckContext&) {
+        const auto pair = iso_pair(p);
+        const GearPairGeometry g(pair);
+        MeshStiffnessOptions o;
+        o.positions = 60;
+        const auto r = MeshStiffness(g, steel, o).solve();
+        const auto iso = reference::iso6336_stiffness(pair);
+        if (mesh) return CheckValue{r.mean_per_face_width(), iso.c_gamma_alpha};
+        return CheckValue{max_single_pair(r, pair.face_width), iso.c_prime,
+                          {{"c_prime_theoretical", iso.c_prime_theoretical},
+                           {"mean_single_pair", mean_single_pair(r, pair.face_width)}}};
+      }});
+}
+
+const bool iso_checks = [] {
+  for (const auto& p : iso_pairs) {
+    register_iso_check(p, false);
+    register_iso_check(p, true);
+  }
+  return true;
+}();
+
+// --- Model properties ---------------------------------------------------------------------
+
+// Root circle crossing the base circle (z 41, α 20°): the dedendum is varied by ±1e-7
+// relative around R_f = R_b. The compliance is Lipschitz in R_f with a sensitivity below
+// ~10 per unit relative change, so a jump would show far above 1e-5.
+const RegisterCheck continuity(CheckSpec{
+    .id = "stiffness.continuity_root_base", .section = section, .solver = solver,
+    .reference = "the model itself (branch switch)",
+    .quantity = "relative jump of the pair compliance at the pitch point across R_f = R_b",
+    .unit = "-", .tolerance = {1e-5, 0},
+    .justification = "a ±1e-7 relative step in R_f moves a continuous compliance by < 1e-6",
+    .tier = Tier::fast, .run = [](const CheckContext&) {
+      auto pair = iso_pair({41, 60, 0.0, 0.0});
+      const double R = 0.5 * 41 * pair.normal_module;
+      const double switch_coef = (R - R * std::cos(pair.normal_pressure_angle)) / pair.normal_module;
+      auto compliance = [&](double coef) {
+        pair.dedendum_coef = coef;
+        const GearPairGeometry g(pair);
+        const stiffness::PairStiffness k(g, steel, stiffness::BeamStart::improved,
+                                         {0.5 * g.radii(0).root, 0.5 * g.radii(1).root}, std::nullopt, true);
+        return k.compliance(g.path().C).total();
+      };
+      const double below = compliance(switch_coef * (1 - 1e-7));
+      const double above = compliance(switch_coef * (1 + 1e-7));
+      return CheckValue{std::abs(above - below) / below, 0.0, {{"dedendum_coef_at_switch", switch_coef}}};
+    }});
+
+const RegisterCheck crack_zero(CheckSpec{
+    .id = "stiffness.crack_length_zero", .section = section, .solver = solver,
+    .reference = "the healthy tooth", .quantity = "max relative difference, crack 0 mm vs healthy",
+    .unit = "-", .tolerance = {0, 0}, .justification = "a zero-length crack is the healthy tooth exactly",
+    .tier = Tier::fast, .run = [](const CheckContext& ctx) {
+      const auto c = seed003(ctx);
+      const GearPairGeometry g(c.pair);
+      MeshStiffnessOptions healthy, zero;
+      zero.crack = pitch_crack(0.0);
+      const auto a = MeshStiffness(g, c.materials, healthy).solve();
+      const auto b = MeshStiffness(g, c.materials, zero).solve();
+      double worst = 0.0;
+      for (std::size_t i = 0; i < a.single_pair_stiffness.size(); ++i)
+        worst = std::max(worst, std::abs(a.single_pair_stiffness[i] - b.single_pair_stiffness[i]));
+      return CheckValue{worst, 0.0};
+    }});
+
+// Monotone in crack length above the crack mouth, untouched below it.
+const RegisterCheck crack_monotone(CheckSpec{
+    .id = "stiffness.crack_monotone", .section = section, .solver = solver,
+    .reference = "the model itself (crack ordering)",
+    .quantity = "positions where k does not fall with crack length (0…2.5 mm) or changes below the mouth",
+    .unit = "count", .tolerance = {0, 0},
+    .justification = "a longer crack removes material: the order is exact, not approximate",
+    .tier = Tier::fast, .run = [](const CheckContext& ctx) {
+      const auto c = seed003(ctx);
+      const GearPairGeometry g(c.pair);
+      const double mouth = g.radii(0).base * std::tan(g.transverse_pressure_angle());
+      std::vector<std::vector<double>> curves;
+      std::vector<double> positions;
+      for (double q : {0.0, 0.5, 1.0, 1.5, 2.0, 2.5}) {
+        MeshStiffnessOptions o;
+        o.crack = pitch_crack(q);
+        const auto r = MeshStiffness(g, c.materials, o).solve();
+        curves.push_back(r.single_pair_stiffness);
+        positions = r.path_position;
+      }
+      int violations = 0;
+      for (std::size_t i = 0; i < positions.size(); ++i)
+        for (std::size_t q = 1; q < curves.size(); ++q) {
+          const bool above_mouth = positions[i] > mouth;
+          if (above_mouth && !(curves[q][i] < curves[q - 1][i])) ++violations;
+          if (!above_mouth && curves[q][i] != curves[0][i]) ++violations;
+        }
+      return CheckValue{static_cast<double>(violations), 0.0, {{"positions", positions.size()}}};
+    }});
+
+// --- Helical slicing ------------------------------------------------------------------------
+
+model::GearPair helical_seed003(const CheckContext& ctx) {
+  auto pair = seed003(ctx).pair;
+  pair.helix_angle = 15.0 * M_PI / 180.0;
+  return pair;
+}
+
+// The sliced sum uses a cubic spline of the single-pair curve (1025 nodes on A..E); the
+// curve is smooth on A..E, so the spline error scales as h⁴ and sits near 1e-10.
+const RegisterCheck helical_spline(CheckSpec{
+    .id = "stiffness.helical.spline_vs_direct", .section = section, .solver = solver,
+    .reference = "direct evaluation of every slice",
+    .quantity = "max relative difference of the sliced mesh stiffness (β 15°, 50 slices)",
+    .unit = "-", .tolerance = {1e-7, 0},
+    .justification = "natural cubic spline on 1025 nodes of a smooth curve: O(h⁴) ≈ 1e-10; "
+                     "1e-7 leaves margin for the ends, where the natural end condition is O(h²)",
+    .tier = Tier::fast, .run = [](const CheckContext& ctx) {
+      const auto pair = helical_seed003(ctx);
+      const auto materials = seed003(ctx).materials;
+      const GearPairGeometry g(pair);
+      MeshStiffnessOptions o;
+      o.positions = 24;
+      const auto r = MeshStiffness(g, materials, o).solve();
+      const stiffness::PairStiffness direct(g, materials, o.beam_start,
+                                            {0.5 * g.radii(0).root, 0.5 * g.radii(1).root}, std::nullopt, true);
+      const double pb = g.base_pitch_transverse();
+      const double w = pair.face_width / o.slices;
+      const double shift = w * std::tan(g.base_helix_angle());
+      double worst = 0.0;
+      for (std::size_t i = 0; i < r.mesh_position.size(); ++i) {
+        const double s0 = g.path().A + pb * static_cast<double>(i) / o.positions;
+        double k = 0.0;
+        for (int j = 0; j < o.slices; ++j) {
+          const double sj = s0 - (j + 0.5) * shift;
+          for (double s = sj - std::floor((sj - g.path().A) / pb) * pb; s <= g.path().E; s += pb)
+            k += w * direct.stiffness_per_width(s);
+        }
+        worst = std::max(worst, std::abs(r.mesh_stiffness[i] - k) / k);
+      }
+      return CheckValue{worst, 0.0};
+    }});
+
+// Slicing is a midpoint rule across the face width. Averaged over a mesh cycle its error
+// largely cancels: 50…400 slices differ by ~1e-5 relative and not monotonically, so no
+// order is claimed (the diagnostics list the means); the check bounds the 200-slice mean
+// against 400 slices.
+const RegisterCheck helical_slices(CheckSpec{
+    .id = "stiffness.helical.slice_convergence", .section = section, .solver = solver,
+    .reference = "the same model on 400 slices",
+    .quantity = "mean mesh stiffness on 200 slices (β 15°)", .unit = "N/(mm·µm)",
+    .tolerance = {0, 1e-3},
+    .justification = "the 200→400-slice change bounds the slicing error of the cycle mean",
+    .tier = Tier::fast, .run = [](const CheckContext& ctx) {
+      const auto pair = helical_seed003(ctx);
+      const auto materials = seed003(ctx).materials;
+      const GearPairGeometry g(pair);
+      std::vector<double> means;
+      for (int slices : {50, 100, 200, 400}) {
+        MeshStiffnessOptions o;
+        o.positions = 90;
+        o.slices = slices;
+        means.push_back(MeshStiffness(g, materials, o).solve().mean_per_face_width());
+      }
+      return CheckValue{means[2], means[3], {{"means_50_100_200_400", means}}};
+    }});
+
+// --- Seed 003 reproduction ------------------------------------------------------------------
+
+struct CrackDrops {
+  double mesh = 0.0;   ///< max relative drop of the total mesh stiffness
+  double shear = 0.0;  ///< max relative drop of the cracked tooth's shear stiffness
+};
+
+CrackDrops crack_drops(const CheckContext& ctx, double length_mm) {
+  const auto c = seed003(ctx);
+  const GearPairGeometry g(c.pair);
+  MeshStiffnessOptions healthy, cracked;
+  cracked.crack = pitch_crack(length_mm);
+  const auto h = MeshStiffness(g, c.materials, healthy).solve();
+  const auto k = MeshStiffness(g, c.materials, cracked).solve();
+  CrackDrops d;
+  for (std::size_t i = 0; i < k.mesh_stiffness.size(); ++i)
+    d.mesh = std::max(d.mesh, 1.0 - k.mesh_stiffness[i] / k.healthy_mesh_stiffness[i]);
+  for (std::size_t i = 0; i < k.shear[0].size(); ++i)
+    d.shear = std::max(d.shear, 1.0 - k.shear[0][i] / h.shear[0][i]);
+  return d;
+}
+
+const RegisterCheck seed003_mesh_drop(CheckSpec{
+    .id = "seed003.mesh_stiffness_drop_2_5mm", .section = seed_section, .solver = solver,
+    .reference = "seed 003 (14.3 %)",
+    .quantity = "max drop of the total mesh stiffness, 2.5 mm pitch crack at 45°", .unit = "%",
+    .tolerance = {1.0, 0}, .justification = "one percentage point: the paper reads its curves to 0.1 %, "
+    "but our tooth model's free choices (fillet, foundation) move the figure by more",
+    .tier = Tier::fast,
+    .run = [](const CheckContext& ctx) { return CheckValue{100 * crack_drops(ctx, 2.5).mesh, 14.3}; },
+    .recorded = 32.1, .recorded_tolerance = 0.01});
+
+const RegisterCheck seed003_shear_drop(CheckSpec{
+    .id = "seed003.shear_stiffness_drop_2_5mm", .section = seed_section, .solver = solver,
+    .reference = "seed 003 (49 %)",
+    .quantity = "max drop of the cracked tooth's shear stiffness, 2.5 mm crack", .unit = "%",
+    .tolerance = {1.0, 0}, .justification = "one percentage point (the paper prints 49 %)",
+    .tier = Tier::fast,
+    .run = [](const CheckContext& ctx) { return CheckValue{100 * crack_drops(ctx, 2.5).shear, 49.0}; },
+    .recorded = 55.0, .recorded_tolerance = 0.01});
+
+// --- Figures and notes ----------------------------------------------------------------------
+
+std::vector<double> scaled(std::vector<double> v, double factor) {
+  for (auto& x : v) x *= factor;
+  return v;
+}
+
+void add_seed003_figures(const CheckContext& ctx, reports::Report& report) {
+  const auto c = seed003(ctx);
+  const GearPairGeometry g(c.pair);
+  const double to_deg = 180.0 / M_PI;
+  std::vector<reports::Series> mesh, bending, shear;
+  for (double q : {0.0, 1.0, 2.0, 2.5}) {
+    MeshStiffnessOptions o;
+    o.crack = pitch_crack(q);
+    const auto r = MeshStiffness(g, c.materials, o).solve();
+    const std::string label = q == 0.0 ? "healthy" : fmt::format("{} mm crack", q);
+    mesh.push_back({label, scaled(r.mesh_position, to_deg), scaled(r.mesh_stiffness, 1e-8)});
+    const auto roll = scaled(r.path_position, 1.0 / g.radii(0).base * to_deg);
+    bending.push_back({label, roll, scaled(r.bending[0], 1e-8)});
+    shear.push_back({label, roll, scaled(r.shear[0], 1e-8)});
+  }
+  {
+    const auto r = MeshStiffness(g, c.materials, MeshStiffnessOptions{}).solve();
+    const auto roll = scaled(r.path_position, 1.0 / g.radii(0).base * to_deg);
+    const std::vector<double> hertz(roll.size(), r.hertz * 1e-8);
+    report.figures.push_back({"stiffness_seed003_components", section,
+                              "Seed 003 pair, healthy: stiffness components along A..E (log scale)",
+                              "pinion roll angle [deg]", "k [1e8 N/m]",
+                              {{"bending, pinion", roll, scaled(r.bending[0], 1e-8)},
+                               {"shear, pinion", roll, scaled(r.shear[0], 1e-8)},
+                               {"axial, pinion", roll, scaled(r.axial[0], 1e-8)},
+                               {"foundation, pinion", roll, scaled(r.foundation[0], 1e-8)},
+                               {"Hertz", roll, hertz},
+                               {"single pair", roll, scaled(r.single_pair_stiffness, 1e-8)}},
+                              true});
+  }
+  report.figures.push_back({"stiffness_seed003_mesh", seed_section,
+                            "Seed 003: mesh stiffness over the cracked tooth's engagement (45° pitch crack)",
+                            "pinion rotation from A [deg]", "k [1e8 N/m]", mesh});
+  report.figures.push_back({"stiffness_seed003_bending", seed_section,
+                            "Seed 003: bending stiffness of the cracked pinion tooth",
+                            "pinion roll angle [deg]", "k_b [1e8 N/m]", bending});
+  report.figures.push_back({"stiffness_seed003_shear", seed_section,
+                            "Seed 003: shear stiffness of the cracked pinion tooth",
+                            "pinion roll angle [deg]", "k_s [1e8 N/m]", shear});
+
+  std::string rows;
+  for (double q : {1.0, 2.0, 2.5}) {
+    const auto d = crack_drops(ctx, q);
+    rows += fmt::format("| {} | {:.1f} | {:.1f} |\n", q, 100 * d.mesh, 100 * d.shear);
+  }
+  report.notes.push_back({seed_section, fmt::format(
+      "Crack at the pitch circle of the pinion, 45°, through the face; improved tooth model "
+      "(docs/stiffness-model.md) with the Sainsot foundation.\n\n"
+      "| crack [mm] | max drop of mesh stiffness [%] | max drop of shear stiffness [%] |\n"
+      "|---|---|---|\n{}\n"
+      "The paper reports 14.3 % and 49 % at 2.5 mm. Both are missed, in opposite directions, "
+      "and the gap is understood in part. At 2.5 mm the crack passes the centre line "
+      "(h_c = −0.20 mm). Seed eq. (10) then writes the section as (h_x − h_c)·L: read with "
+      "h_c signed, that thickens the section. With that literal reading the drops become "
+      "19.8 % (mesh) and 38.9 % (shear), which brackets the paper's pair. gearbench keeps the "
+      "physical ligament h_x + h_c. The paper's fillet arc (eq. 1) is garbled in print: "
+      "gearbench's arc choice, the foundation term and the u_f convention all shift the "
+      "healthy stiffness, and with it the relative drop. Seed figure 3 cannot be digitised "
+      "from the text, so the remaining share of the gap cannot be assigned.", rows)});
+}
+
+void add_iso_table(reports::Report& report) {
+  std::string rows;
+  for (const auto& p : iso_pairs) {
+    const auto pair = iso_pair(p);
+    const GearPairGeometry g(pair);
+    MeshStiffnessOptions o;
+    o.positions = 60;
+    const auto r = MeshStiffness(g, steel, o).solve();
+    const auto iso = reference::iso6336_stiffness(pair);
+    rows += fmt::format("| {}/{} | {}/{} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |\n", p.z1,
+                        p.z2, p.x1, p.x2, max_single_pair(r, pair.face_width), iso.c_prime,
+                        iso.c_prime_theoretical, mean_single_pair(r, pair.face_width),
+                        r.mean_per_face_width(), iso.c_gamma_alpha);
+  }
+  report.notes.push_back({section, fmt::format(
+      "**Against ISO 6336-1 method B** (m 2 mm, α 20°, b 20 mm, steel, solid blanks), in "
+      "N/(mm·µm). ISO defines c′ as the maximum stiffness of one pair and c_γα as the mesh "
+      "mean, and the checks compare those quantities. The energy method's single-pair "
+      "maximum lies 0.87–1.15 × c′. The single-pair mean over A..E is lower, 0.77–1.02 × c′, "
+      "and leaves the ±20 % band for z ≥ 60. ISO's c′ carries the empirical C_M = 0.8; "
+      "its theoretical c′_th = 1/q′ is listed for reference.\n\n"
+      "| z | x | single-pair max | ISO c′ | ISO c′_th | single-pair mean | mesh mean | ISO c_γα |\n"
+      "|---|---|---|---|---|---|---|---|\n{}", rows)});
+}
+
+const RegisterSection stiffness_section(SectionSpec{
+    .id = "stiffness", .tier = Tier::fast, .add = [](const CheckContext& ctx, reports::Report& report) {
+      add_iso_table(report);
+      add_seed003_figures(ctx, report);
+    }});
+
+}  // namespace
+}  // namespace gearbench::verification
