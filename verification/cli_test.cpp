@@ -147,6 +147,47 @@ const BadCase bad_cases[] = {
 INSTANTIATE_TEST_SUITE_P(Classes, BadInput, testing::ValuesIn(bad_cases),
                          [](const testing::TestParamInfo<BadCase>& param_info) { return param_info.param.name; });
 
+TEST(Cli, Seed003StiffnessRuns) {
+  const auto o = run_gearbench("run " GEARBENCH_SOURCE_DIR "/cases/seed003_spur_stiffness.json");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  EXPECT_EQ(r["mesh_stiffness_N_per_m"].size(), 360u);
+  EXPECT_EQ(r["mesh_position_rad"].size(), 360u);
+  for (const char* key : {"single_pair_stiffness_N_per_m", "mesh_stiffness_mean_N_per_m", "mesh_stiffness_min_N_per_m",
+                          "mesh_stiffness_max_N_per_m", "mesh_stiffness_mean_N_per_mm_um", "hertz_N_per_m", "components"})
+    EXPECT_TRUE(r.contains(key)) << key;
+  for (const char* key : {"q_prime", "c_prime_N_per_mm_um", "c_gamma_alpha_N_per_mm_um"})
+    EXPECT_TRUE(r["iso6336"].contains(key)) << key;
+  const auto cracked = run_gearbench("run " GEARBENCH_SOURCE_DIR "/cases/seed003_spur_pitch_crack_2_5mm.json");
+  ASSERT_EQ(cracked.exit_code, 0) << cracked.err;
+  EXPECT_LT(json::parse(cracked.out)["mesh_stiffness_min_N_per_m"].get<double>(),
+            r["mesh_stiffness_min_N_per_m"].get<double>());
+}
+
+TEST(Cli, StiffnessBadInput) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_stiffness.json");
+  const auto base = json::parse(in);
+  const std::pair<std::function<void(json&)>, std::string> cases[] = {
+      {[](json& j) { j["crack"] = {{"type", "tip"}, {"length_mm", 1}, {"angle_deg", 45}}; },
+       "crack.type = \"tip\": allowed values are pitch, root"},
+      {[](json& j) { j["crack"] = {{"type", "pitch"}, {"length_mm", 1}, {"angle_deg", 45}, {"gear", 3}}; },
+       "crack.gear = 3: allowed range is [1, 2]"},
+      {[](json& j) { j["crack"] = {{"type", "pitch"}, {"length_mm", -1}, {"angle_deg", 45}}; },
+       "crack.length_mm = -1: allowed range is [0, 10000] mm"},
+      {[](json& j) { j.erase("materials"); }, "materials: missing required key"},
+      {[](json& j) { j["beam_start"] = "root"; }, "beam_start = \"root\": allowed values are improved, straight, base_circle"},
+      {[](json& j) { j["positions"] = 0; }, "positions = 0: allowed range is [2, 100000]"},
+  };
+  int n = 0;
+  for (const auto& [edit, expected] : cases) {
+    auto j = base;
+    edit(j);
+    const auto o = run_gearbench("run " + write_case("stiffness_bad_" + std::to_string(n++), j.dump()));
+    EXPECT_EQ(o.exit_code, 2) << o.err;
+    EXPECT_NE(o.err.find(expected), std::string::npos) << o.err;
+  }
+}
+
 TEST(Cli, MalformedJsonGivesLine) {
   const auto o = run_gearbench("run " + write_case("malformed", "{\n  \"kind\": \"geometry\",\n  \"gear_pair\": {,\n}\n"));
   EXPECT_EQ(o.exit_code, 2);

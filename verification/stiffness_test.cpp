@@ -1,0 +1,126 @@
+// Unit tests of solvers/stiffness: closed-form pieces, the tooth profile's branches,
+// stiffness-based load sharing, herringbone halves and the input errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "model/errors.h"
+#include "stiffness/hertz.h"
+#include "stiffness/mesh_stiffness.h"
+
+namespace gearbench::stiffness {
+namespace {
+
+constexpr double deg = M_PI / 180.0;
+const model::Material steel{212e9, 0.289, 7850};
+const std::array<model::Material, 2> steels{steel, steel};
+
+model::GearPair seed003() {
+  model::GearPair g;
+  g.teeth = {20, 25};
+  g.normal_module = 2e-3;
+  g.normal_pressure_angle = 20 * deg;
+  g.face_width = 20e-3;
+  return g;
+}
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Hertz, EqualMaterialsForm) {
+  // π·E·L/(4(1 − ν²)) (Yang & Sun 1985).
+  EXPECT_NEAR(hertz_stiffness(steel, steel, 0.02), M_PI * 212e9 * 0.02 / (4 * (1 - 0.289 * 0.289)), 1e-3);
+  const model::Material soft{70e9, 0.33, 2700};
+  EXPECT_LT(hertz_stiffness(steel, soft, 0.02), hertz_stiffness(steel, steel, 0.02));
+}
+
+TEST(ToothProfile, ImprovedFilletMeetsInvoluteAtBaseCircle) {
+  const geometry::GearPairGeometry g(seed003());
+  const ToothProfile p(g, 0, BeamStart::improved);
+  ASSERT_LT(p.root_radius(), p.base_radius());
+  EXPECT_GT(p.fillet_radius(), 0.0);
+  const double xB = p.base_point_x();
+  EXPECT_NEAR(p.half_thickness(xB - 1e-12), p.half_thickness(xB + 1e-12), 1e-10);
+  EXPECT_LT(p.beam_start(), xB);
+  // The fillet thickens the tooth toward the root: thicker than the straight variant.
+  const ToothProfile straight(g, 0, BeamStart::straight);
+  EXPECT_GT(p.half_thickness(0.5 * (p.beam_start() + xB)), straight.half_thickness(0.5 * (p.beam_start() + xB)));
+}
+
+TEST(ToothProfile, RootAboveBaseStartsOnTheInvolute) {
+  auto pair = seed003();
+  pair.teeth = {60, 80};
+  const geometry::GearPairGeometry g(pair);
+  const ToothProfile p(g, 0, BeamStart::improved);
+  ASSERT_GT(p.root_radius(), p.base_radius());
+  EXPECT_NEAR(std::hypot(p.beam_start(), p.half_thickness(p.beam_start())), p.root_radius(), 1e-12);
+}
+
+TEST(StiffnessLoadSharing, SharesSumToOne) {
+  const geometry::GearPairGeometry g(seed003());
+  const PairStiffness k(g, steels, BeamStart::improved, {8e-3, 10e-3}, std::nullopt, true);
+  const StiffnessLoadSharing sharing(k);
+  const auto& p = g.path();
+  const double pb = g.base_pitch_transverse();
+  for (int i = 1; i < 50; ++i) {
+    const double s = p.A + (p.B - p.A) * i / 50.0;
+    EXPECT_NEAR(sharing.share(g, s) + sharing.share(g, s + pb), 1.0, 1e-12);
+  }
+  EXPECT_NEAR(sharing.share(g, p.C), 1.0, 1e-12);  // single contact
+  EXPECT_EQ(sharing.name(), "stiffness");
+}
+
+TEST(MeshStiffness, HerringboneIsTwoHalves) {
+  auto pair = seed003();
+  pair.helix_angle = 20 * deg;
+  const geometry::GearPairGeometry half(pair);
+  pair.herringbone = model::Herringbone{0.01};
+  const geometry::GearPairGeometry both(pair);
+  MeshStiffnessOptions o;
+  o.positions = 30;
+  const auto a = MeshStiffness(half, steels, o).solve();
+  const auto b = MeshStiffness(both, steels, o).solve();
+  EXPECT_NEAR(b.mean, 2.0 * a.mean, 1e-9 * b.mean);
+  EXPECT_NEAR(b.mean_per_face_width(), a.mean_per_face_width(), 1e-9);
+}
+
+TEST(MeshStiffness, InputErrorsNameTheKey) {
+  const geometry::GearPairGeometry g(seed003());
+  MeshStiffnessOptions o;
+  o.crack = GearCrack{{Crack::Type::pitch, 4e-3, 45 * deg}, 0};
+  EXPECT_NE(error_of([&] { MeshStiffness(g, steels, o); }).find("crack.length_mm = 4: the crack leaves no section"),
+            std::string::npos);
+  o.crack.reset();
+  o.positions = 1;
+  EXPECT_EQ(error_of([&] { MeshStiffness(g, steels, o); }), "positions = 1: allowed range is [2, 100000]");
+  auto helical = seed003();
+  helical.helix_angle = 10 * deg;
+  const geometry::GearPairGeometry h(helical);
+  MeshStiffnessOptions cracked;
+  cracked.crack = GearCrack{{Crack::Type::pitch, 1e-3, 45 * deg}, 0};
+  EXPECT_NE(error_of([&] { MeshStiffness(h, steels, cracked); }).find("spur gears only"), std::string::npos);
+  MeshStiffnessOptions bore;
+  bore.bore_radius = std::array<double, 2>{30e-3, 5e-3};
+  EXPECT_NE(error_of([&] { MeshStiffness(g, steels, bore); }).find("bore_diameter_mm[0] = 60"), std::string::npos);
+}
+
+TEST(MeshStiffness, CrackedEngagementSpansThePath) {
+  const geometry::GearPairGeometry g(seed003());
+  MeshStiffnessOptions o;
+  o.positions = 50;
+  o.crack = GearCrack{{Crack::Type::pitch, 1e-3, 45 * deg}, 0};
+  const auto r = MeshStiffness(g, steels, o).solve();
+  ASSERT_EQ(r.healthy_mesh_stiffness.size(), r.mesh_stiffness.size());
+  EXPECT_NEAR(r.mesh_position.back(), (g.path().E - g.path().A) / g.radii(0).base, 1e-12);
+  EXPECT_DOUBLE_EQ(r.mesh_stiffness.front(), r.healthy_mesh_stiffness.front());  // crack not yet loaded
+  EXPECT_LT(r.mesh_stiffness.back(), r.healthy_mesh_stiffness.back());
+}
+
+}  // namespace
+}  // namespace gearbench::stiffness
