@@ -1,0 +1,67 @@
+#include "deformation.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace gearbench::ehl {
+
+namespace {
+double cell_integral(double a, double h) {
+  auto f = [](double t) { return t == 0.0 ? 0.0 : t * (std::log(std::abs(t)) - 1.0); };
+  return f(a + 0.5 * h) - f(a - 0.5 * h);
+}
+}  // namespace
+
+Deformation::Deformation(std::size_t nodes, double h) : n_(nodes), padded_(2 * nodes) {
+  kernel_.resize(n_);
+  for (std::size_t k = 0; k < n_; ++k) kernel_[k] = cell_integral(static_cast<double>(k) * h, h);
+
+  real_buffer_ = fftw_alloc_real(padded_);
+  complex_buffer_ = fftw_alloc_complex(padded_ / 2 + 1);
+  if (!real_buffer_ || !complex_buffer_) throw std::runtime_error("FFTW allocation failed");
+  const int size = static_cast<int>(padded_);
+  forward_ = fftw_plan_dft_r2c_1d(size, real_buffer_, complex_buffer_, FFTW_ESTIMATE);
+  backward_ = fftw_plan_dft_c2r_1d(size, complex_buffer_, real_buffer_, FFTW_ESTIMATE);
+
+  // Circulant embedding of the symmetric Toeplitz kernel: c = [K_0..K_{n−1}, 0, K_{n−1}..K_1].
+  for (std::size_t i = 0; i < padded_; ++i) real_buffer_[i] = 0.0;
+  for (std::size_t k = 0; k < n_; ++k) real_buffer_[k] = kernel_[k];
+  for (std::size_t k = 1; k < n_; ++k) real_buffer_[padded_ - k] = kernel_[k];
+  fftw_execute(forward_);
+  kernel_hat_.resize(padded_ / 2 + 1);
+  for (std::size_t i = 0; i < kernel_hat_.size(); ++i)
+    kernel_hat_[i] = {complex_buffer_[i][0], complex_buffer_[i][1]};
+}
+
+Deformation::~Deformation() {
+  fftw_destroy_plan(forward_);
+  fftw_destroy_plan(backward_);
+  fftw_free(real_buffer_);
+  fftw_free(complex_buffer_);
+}
+
+void Deformation::apply(const std::vector<double>& P, std::vector<double>& W) const {
+  for (std::size_t i = 0; i < padded_; ++i) real_buffer_[i] = i < n_ ? P[i] : 0.0;
+  fftw_execute(forward_);
+  for (std::size_t i = 0; i < kernel_hat_.size(); ++i) {
+    const std::complex<double> product =
+        std::complex<double>(complex_buffer_[i][0], complex_buffer_[i][1]) * kernel_hat_[i];
+    complex_buffer_[i][0] = product.real();
+    complex_buffer_[i][1] = product.imag();
+  }
+  fftw_execute(backward_);
+  W.resize(n_);
+  const double scale = 1.0 / static_cast<double>(padded_);  // FFTW's transforms are unnormalised
+  for (std::size_t i = 0; i < n_; ++i) W[i] = real_buffer_[i] * scale;
+}
+
+void Deformation::apply_direct(const std::vector<double>& P, std::vector<double>& W) const {
+  W.assign(n_, 0.0);
+  for (std::size_t i = 0; i < n_; ++i) {
+    double sum = 0.0;
+    for (std::size_t j = 0; j < n_; ++j) sum += kernel_[i > j ? i - j : j - i] * P[j];
+    W[i] = sum;
+  }
+}
+
+}  // namespace gearbench::ehl

@@ -1,0 +1,94 @@
+#include "line_contact_problem.h"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <numbers>
+
+#include "lubricant/rheology.h"
+#include "model/errors.h"
+
+namespace gearbench::ehl {
+
+namespace {
+constexpr double pi = std::numbers::pi;
+constexpr double martin_load_constant = 4.8950;  // w·h0/(η0·ū·R), Reynolds outlet (Martin 1916)
+constexpr double moes_switch = 3.0;              // Hertzian scaling from M = 3 upward
+}  // namespace
+
+double LineContactData::moes_M() const {
+  const double U_sum = viscosity * (u1 + u2) / (reduced_modulus * reduced_radius);
+  return load_per_length / (reduced_modulus * reduced_radius) / std::sqrt(U_sum);
+}
+
+double LineContactData::moes_L() const {
+  const double U_sum = viscosity * (u1 + u2) / (reduced_modulus * reduced_radius);
+  return pressure_viscosity * reduced_modulus * std::pow(U_sum, 0.25);
+}
+
+LineContactData LineContactData::from_moes(double M, double L) {
+  LineContactData d;
+  d.reduced_radius = 0.01;
+  d.reduced_modulus = 2.2e11;
+  d.viscosity = 0.04;
+  d.u1 = d.u2 = 1.0;
+  const double U_sum = d.viscosity * (d.u1 + d.u2) / (d.reduced_modulus * d.reduced_radius);
+  d.load_per_length = M * std::sqrt(U_sum) * d.reduced_modulus * d.reduced_radius;
+  d.pressure_viscosity = L / std::pow(U_sum, 0.25) / d.reduced_modulus;
+  d.viscosity_model = ViscosityModel::barus;
+  d.density_model = DensityModel::incompressible;
+  return d;
+}
+
+LineContactProblem::LineContactProblem(const LineContactData& data) : data_(data) {
+  const double R = data.reduced_radius;
+  const double w = data.load_per_length;
+  const double E = data.reduced_modulus;
+  const double u = data.mean_speed();
+  // Hertz line contact: b = √(8wR/(πE′)), p_h = 2w/(πb).
+  b_ = std::sqrt(8.0 * w * R / (pi * E));
+  p_h_ = 2.0 * w / (pi * b_);
+  hertzian_ = data.moes_M() >= moes_switch;
+  if (hertzian_) {
+    ell_ = b_;
+    p_r_ = p_h_;
+  } else {
+    const double h_martin = martin_load_constant * data.viscosity * u * R / w;
+    ell_ = std::sqrt(2.0 * R * h_martin);
+    p_r_ = w / ell_;
+  }
+  lambda_ = 12.0 * data.viscosity * u * R * R / (ell_ * ell_ * ell_ * p_r_);
+  D_ = 4.0 * p_r_ * R / (E * ell_);
+  F_ = w / (p_r_ * ell_);
+  roelands_z_ = data.roelands_z > 0.0 ? data.roelands_z
+                                      : lubricant::roelands_z_from_alpha(data.viscosity, data.pressure_viscosity);
+  // Barus at ᾱ = α·p_h beyond ~40 means η/η0 ~ e^40 and more: no meaningful lubricant.
+  const double alpha_bar = data.pressure_viscosity * p_h_;
+  if (data.viscosity_model == ViscosityModel::barus && alpha_bar > 40.0)
+    throw InputError(fmt::format(
+        "lubricant.pressure_viscosity_1_per_GPa: ᾱ = α·p_h = {:.1f} exceeds 40 (viscosity ratio "
+        "e^{:.0f} at the Hertz pressure); allowed is α·p_h <= 40 with Barus", alpha_bar, alpha_bar));
+}
+
+double LineContactProblem::x_in() const {
+  if (!hertzian_) return -40.0;
+  return -(4.5 + 6.0 * 1.535 / data_.moes_M());
+}
+
+double LineContactProblem::x_out() const {
+  if (!hertzian_) return 3.0;
+  return 1.5 + 1.535 / data_.moes_M();
+}
+
+double LineContactProblem::viscosity(double P) const {
+  const double p = std::max(P, 0.0) * p_r_;
+  if (data_.viscosity_model == ViscosityModel::barus)
+    return lubricant::barus_viscosity(1.0, data_.pressure_viscosity, p);
+  return lubricant::roelands_viscosity(data_.viscosity, roelands_z_, p) / data_.viscosity;
+}
+
+double LineContactProblem::density(double P) const {
+  if (data_.density_model == DensityModel::incompressible) return 1.0;
+  return lubricant::dowson_higginson_density_ratio(std::max(P, 0.0) * p_r_);
+}
+
+}  // namespace gearbench::ehl
