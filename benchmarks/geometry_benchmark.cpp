@@ -8,17 +8,11 @@
 
 #include "closed_form/involute_closed_form.h"
 #include "geometry/gear_pair_geometry.h"
+#include "support/test_support.h"
 
 namespace {
 
-gearbench::model::GearPair seed004() {
-  gearbench::model::GearPair g;
-  g.teeth = {22, 32};
-  g.normal_module = 2e-3;
-  g.normal_pressure_angle = 25.0 * M_PI / 180.0;
-  g.face_width = 20e-3;
-  return g;
-}
+gearbench::model::GearPair seed004() { return gearbench::testing_support::seed004_pair(); }
 
 void BM_GeometryProfile(benchmark::State& state) {
   const auto pair = seed004();

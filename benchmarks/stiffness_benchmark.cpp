@@ -8,18 +8,15 @@
 
 #include "quadrature/energy_quadrature.h"
 #include "stiffness/mesh_stiffness.h"
+#include "support/test_support.h"
 
 namespace {
 
 using namespace gearbench;
 
 model::GearPair seed003(double helix_deg = 0.0) {
-  model::GearPair g;
-  g.teeth = {20, 25};
-  g.normal_module = 2e-3;
-  g.normal_pressure_angle = 20.0 * M_PI / 180.0;
+  auto g = testing_support::seed003_pair();
   g.helix_angle = helix_deg * M_PI / 180.0;
-  g.face_width = 20e-3;
   return g;
 }
 

@@ -8,28 +8,17 @@
 #include "geometry/involute.h"
 #include "geometry/load_sharing.h"
 #include "model/errors.h"
+#include "support/test_support.h"
 
 namespace gearbench::geometry {
 namespace {
 
 constexpr double deg = M_PI / 180.0;
 
-model::GearPair seed004() {
-  model::GearPair g;
-  g.teeth = {22, 32};
-  g.normal_module = 2e-3;
-  g.normal_pressure_angle = 25 * deg;
-  g.face_width = 20e-3;
-  return g;
-}
+model::GearPair seed004() { return testing_support::seed004_pair(); }
 
 std::string error_of(const model::GearPair& g) {
-  try {
-    GearPairGeometry{g};
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return testing_support::input_error_of([&] { GearPairGeometry{g}; });
 }
 
 TEST(Involute, InverseRoundTrips) {

@@ -3,20 +3,14 @@
 
 #include "model/case_reader.h"
 #include "model/errors.h"
+#include "support/test_support.h"
 
 namespace gearbench::model {
 namespace {
 
 using nlohmann::json;
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing_support::input_error_of;
 
 json spur_pair() {
   return json::parse(R"({"teeth": [22, 32], "normal_module_mm": 2.0,
@@ -36,7 +30,7 @@ TEST(ObjectReader, ReadsUnitsIntoSI) {
 TEST(ObjectReader, UnknownKeySuggestsNearest) {
   auto j = spur_pair();
   j["face_widht_mm"] = 20.0;
-  const auto msg = error_of([&] { read_gear_pair(ObjectReader(j, "gear_pair")); });
+  const auto msg = input_error_of([&] { read_gear_pair(ObjectReader(j, "gear_pair")); });
   EXPECT_NE(msg.find("gear_pair.face_widht_mm: unknown key (did you mean 'face_width_mm'?)"),
                     std::string::npos) << msg;
 }
@@ -44,29 +38,29 @@ TEST(ObjectReader, UnknownKeySuggestsNearest) {
 TEST(ObjectReader, MissingKeyIsNamed) {
   auto j = spur_pair();
   j.erase("normal_module_mm");
-  EXPECT_EQ(error_of([&] { read_gear_pair(ObjectReader(j, "gear_pair")); }),
+  EXPECT_EQ(input_error_of([&] { read_gear_pair(ObjectReader(j, "gear_pair")); }),
             "gear_pair.normal_module_mm: missing required key");
 }
 
 TEST(ObjectReader, WrongTypeIsNamed) {
   auto j = spur_pair();
   j["teeth"] = json::array({22.5, 32});
-  EXPECT_EQ(error_of([&] { read_gear_pair(ObjectReader(j, "gear_pair")); }),
+  EXPECT_EQ(input_error_of([&] { read_gear_pair(ObjectReader(j, "gear_pair")); }),
             "gear_pair.teeth[0] = 22.5: must be an integer, got a number");
   j = spur_pair();
   j["normal_module_mm"] = "2";
-  EXPECT_EQ(error_of([&] { read_gear_pair(ObjectReader(j, "gear_pair")); }),
+  EXPECT_EQ(input_error_of([&] { read_gear_pair(ObjectReader(j, "gear_pair")); }),
             "gear_pair.normal_module_mm = \"2\": must be a number, got a string");
 }
 
 TEST(ObjectReader, RangesAreNamed) {
   auto j = spur_pair();
   j["normal_pressure_angle_deg"] = 40;
-  EXPECT_EQ(error_of([&] { read_gear_pair(ObjectReader(j, "gear_pair")); }),
+  EXPECT_EQ(input_error_of([&] { read_gear_pair(ObjectReader(j, "gear_pair")); }),
             "gear_pair.normal_pressure_angle_deg = 40: allowed range is [10, 35] deg");
   j = spur_pair();
   j["normal_module_mm"] = 0;
-  EXPECT_EQ(error_of([&] { read_gear_pair(ObjectReader(j, "gear_pair")); }),
+  EXPECT_EQ(input_error_of([&] { read_gear_pair(ObjectReader(j, "gear_pair")); }),
             "gear_pair.normal_module_mm = 0: allowed range is (0, 1000] mm");
 }
 
@@ -78,19 +72,19 @@ TEST(ObjectReader, MaterialsOneObjectOrPair) {
   const auto two = json::parse(R"({"materials": [{"youngs_modulus_GPa": 206, "poisson_ratio": 0.3},
                                                  {"youngs_modulus_GPa": 70, "poisson_ratio": 0.7}]})");
   ObjectReader r2(two, "");
-  EXPECT_EQ(error_of([&] { read_materials(r2); }),
+  EXPECT_EQ(input_error_of([&] { read_materials(r2); }),
             "materials[1].poisson_ratio = 0.7: allowed range is [0, 0.5]");
 }
 
 TEST(ObjectReader, LubricantViscosityOrder) {
   const auto j = json::parse(R"({"viscosity_Pa_s": 0.08, "pressure_viscosity_1_per_GPa": 20,
                                  "nu40_mm2_s": 30, "nu100_mm2_s": 320})");
-  EXPECT_NE(error_of([&] { read_lubricant(ObjectReader(j, "lubricant")); }).find("must be below nu40_mm2_s"),
+  EXPECT_NE(input_error_of([&] { read_lubricant(ObjectReader(j, "lubricant")); }).find("must be below nu40_mm2_s"),
             std::string::npos);
 }
 
 TEST(ParseJson, MalformedGivesLine) {
-  const auto msg = error_of([] { parse_json("{\n  \"kind\": \"geometry\",\n  \"x\": ]\n}", "case.json"); });
+  const auto msg = input_error_of([] { parse_json("{\n  \"kind\": \"geometry\",\n  \"x\": ]\n}", "case.json"); });
   EXPECT_EQ(msg.rfind("case.json: malformed JSON at line 3", 0), 0u) << msg;
 }
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "quadrature/energy_quadrature.h"
+#include "support/test_support.h"
 
 namespace gearbench::reference {
 namespace {
@@ -23,14 +24,7 @@ constexpr double deg = M_PI / 180.0;
 using Crack = QuadCrack::Type;
 
 // Seed 003 (Xu et al. 2022): m 2 mm, z 20/25, b 20 mm, α 20°, E 212 GPa, ν 0.289.
-model::GearPair seed003() {
-  model::GearPair g;
-  g.teeth = {20, 25};
-  g.normal_module = 2e-3;
-  g.normal_pressure_angle = 20 * deg;
-  g.face_width = 20e-3;
-  return g;
-}
+model::GearPair seed003() { return testing_support::seed003_pair(); }
 
 const model::Material steel{212e9, 0.289, 7850};
 constexpr double L = 20e-3;

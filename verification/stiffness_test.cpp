@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "model/errors.h"
+#include "support/test_support.h"
 #include "stiffness/hertz.h"
 #include "stiffness/mesh_stiffness.h"
 
@@ -15,23 +16,8 @@ constexpr double deg = M_PI / 180.0;
 const model::Material steel{212e9, 0.289, 7850};
 const std::array<model::Material, 2> steels{steel, steel};
 
-model::GearPair seed003() {
-  model::GearPair g;
-  g.teeth = {20, 25};
-  g.normal_module = 2e-3;
-  g.normal_pressure_angle = 20 * deg;
-  g.face_width = 20e-3;
-  return g;
-}
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+model::GearPair seed003() { return testing_support::seed003_pair(); }
+using testing_support::input_error_of;
 
 TEST(Hertz, EqualMaterialsForm) {
   // π·E·L/(4(1 − ν²)) (Yang & Sun 1985).
@@ -94,20 +80,20 @@ TEST(MeshStiffness, InputErrorsNameTheKey) {
   const geometry::GearPairGeometry g(seed003());
   MeshStiffnessOptions o;
   o.crack = GearCrack{{Crack::Type::pitch, 4e-3, 45 * deg}, 0};
-  EXPECT_NE(error_of([&] { MeshStiffness(g, steels, o); }).find("crack.length_mm = 4: the crack leaves no section"),
+  EXPECT_NE(input_error_of([&] { MeshStiffness(g, steels, o); }).find("crack.length_mm = 4: the crack leaves no section"),
             std::string::npos);
   o.crack.reset();
   o.positions = 1;
-  EXPECT_EQ(error_of([&] { MeshStiffness(g, steels, o); }), "positions = 1: allowed range is [2, 100000]");
+  EXPECT_EQ(input_error_of([&] { MeshStiffness(g, steels, o); }), "positions = 1: allowed range is [2, 100000]");
   auto helical = seed003();
   helical.helix_angle = 10 * deg;
   const geometry::GearPairGeometry h(helical);
   MeshStiffnessOptions cracked;
   cracked.crack = GearCrack{{Crack::Type::pitch, 1e-3, 45 * deg}, 0};
-  EXPECT_NE(error_of([&] { MeshStiffness(h, steels, cracked); }).find("spur gears only"), std::string::npos);
+  EXPECT_NE(input_error_of([&] { MeshStiffness(h, steels, cracked); }).find("spur gears only"), std::string::npos);
   MeshStiffnessOptions bore;
   bore.bore_radius = std::array<double, 2>{30e-3, 5e-3};
-  EXPECT_NE(error_of([&] { MeshStiffness(g, steels, bore); }).find("bore_diameter_mm[0] = 60"), std::string::npos);
+  EXPECT_NE(input_error_of([&] { MeshStiffness(g, steels, bore); }).find("bore_diameter_mm[0] = 60"), std::string::npos);
 }
 
 TEST(MeshStiffness, CrackedEngagementSpansThePath) {
