@@ -9,16 +9,27 @@
 
 namespace gearbench::app {
 
-int run_command(const std::string& case_path, const std::string& output_path) {
-  const auto case_json = model::read_json_file(case_path);
-  const auto result = run_case(case_json);
-  const std::string text = result.dump(2) + "\n";
+namespace {
+void write_output(const std::string& text, const std::string& output_path) {
   if (output_path.empty()) {
     std::cout << text;
-  } else {
-    std::ofstream out(output_path);
-    if (!out) throw InputError(fmt::format("-o {}: cannot write the output file", output_path));
-    out << text;
+    return;
+  }
+  std::ofstream out(output_path);
+  if (!out) throw InputError(fmt::format("-o {}: cannot write the output file", output_path));
+  out << text;
+}
+}  // namespace
+
+int run_command(const std::string& case_path, const std::string& output_path) {
+  const auto case_json = model::read_json_file(case_path);
+  try {
+    write_output(run_case(case_json).dump(2) + "\n", output_path);
+  } catch (const ConvergenceError& e) {
+    // The diagnostics of an unconverged solve go where output was asked for (a file only:
+    // stdout stays empty on failure), then the failure is reported.
+    if (!e.diagnostics.empty() && !output_path.empty()) write_output(e.diagnostics + "\n", output_path);
+    throw;
   }
   return exit_ok;
 }

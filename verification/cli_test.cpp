@@ -188,6 +188,51 @@ TEST(Cli, StiffnessBadInput) {
   }
 }
 
+TEST(Cli, EhlLineRunsAndReportsNonConvergence) {
+  const auto o = run_gearbench("run " GEARBENCH_SOURCE_DIR "/cases/ehl_moes_M20_L10.json");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  for (const char* key : {"h_central_m", "h_min_m", "x_h_min_m", "p_max_Pa", "friction_coefficient", "profile"})
+    EXPECT_TRUE(r.contains(key)) << key;
+  EXPECT_NEAR(r["moes"]["M"].get<double>(), 20.0, 1e-9);
+  EXPECT_TRUE(r["diagnostics"]["converged"].get<bool>());
+  EXPECT_GT(r["diagnostics"]["residual_history"].size(), 0u);
+
+  // One cycle cannot converge: exit 3, one error line, the diagnostics still written to -o.
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/ehl_moes_M20_L10.json");
+  auto j = json::parse(in);
+  j["grid"]["max_cycles"] = 1;
+  const auto out = (fs::temp_directory_path() / "gb_ehl_unconverged.json").string();
+  const auto failed = run_gearbench("run " + write_case("ehl_one_cycle", j.dump()) + " -o " + out);
+  EXPECT_EQ(failed.exit_code, 3) << failed.err;
+  EXPECT_EQ(failed.err.rfind("error: EHL multigrid did not converge in 1 cycles", 0), 0u) << failed.err;
+  std::ifstream diag(out);
+  const auto d = json::parse(diag);
+  EXPECT_FALSE(d["diagnostics"]["converged"].get<bool>());
+  EXPECT_EQ(d["diagnostics"]["residual_history"].size(), 1u);
+  fs::remove(out);
+}
+
+TEST(Cli, EhlLineBadInput) {
+  const std::pair<std::string, std::string> cases[] = {
+      {R"({"kind": "ehl_line", "moes": {"M": 20, "L": 10}, "contact": {}})", "give either \"moes\" or"},
+      {R"({"kind": "ehl_line", "moes": {"M": 0, "L": 10}})", "moes.M = 0: allowed range is [0.001, 10000]"},
+      {R"({"kind": "ehl_line", "moes": {"M": 1000, "L": 25}})", "ᾱ = α·p_h = 315"},
+      {R"({"kind": "ehl_line", "contact": {"reduced_radius_m": 0.01, "load_per_length_N_per_m": 1e5,
+          "surface_speeds_m_per_s": [0, 0], "reduced_modulus_Pa": 2.2e11},
+          "lubricant": {"viscosity_Pa_s": 0.04, "pressure_viscosity_1_per_GPa": 20}})",
+       "the entrainment speed must be positive"},
+      {R"({"kind": "ehl_line", "moes": {"M": 20, "L": 10}, "grid": {"nodes": 1000}})",
+       "grid.nodes = 1000: use (n0 − 1)·2^k + 1 nodes"},
+  };
+  int n = 0;
+  for (const auto& [text, expected] : cases) {
+    const auto o = run_gearbench("run " + write_case("ehl_bad_" + std::to_string(n++), text));
+    EXPECT_EQ(o.exit_code, 2) << text << "\n" << o.err;
+    EXPECT_NE(o.err.find(expected), std::string::npos) << o.err;
+  }
+}
+
 TEST(Cli, MalformedJsonGivesLine) {
   const auto o = run_gearbench("run " + write_case("malformed", "{\n  \"kind\": \"geometry\",\n  \"gear_pair\": {,\n}\n"));
   EXPECT_EQ(o.exit_code, 2);

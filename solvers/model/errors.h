@@ -13,9 +13,13 @@ class InputError : public std::runtime_error {
 };
 
 /// A solver that did not converge; the message says how far it got. CLI exit code 3.
+/// `diagnostics` may carry the unconverged result as JSON text, for the CLI to write where
+/// the user asked for output before it reports the failure.
 class ConvergenceError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit ConvergenceError(const std::string& message, std::string diagnostics_json = "")
+      : std::runtime_error(message), diagnostics(std::move(diagnostics_json)) {}
+  std::string diagnostics;
 };
 
 }  // namespace gearbench

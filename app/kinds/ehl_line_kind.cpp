@@ -1,0 +1,148 @@
+// Case kind "ehl_line": steady isothermal line-contact EHL by FAS multigrid, from
+// dimensional contact data or from Moes' (M, L).
+#include <cmath>
+#include <fmt/format.h>
+
+#include "ehl/line_contact_solver.h"
+#include "kind_registry.h"
+#include "model/errors.h"
+#include "model/json_reader.h"
+
+namespace gearbench::app {
+namespace {
+
+using nlohmann::json;
+using model::Range;
+
+ehl::LineContactData read_dimensional(model::ObjectReader& root) {
+  ehl::LineContactData d;
+  auto c = root.object("contact");
+  d.reduced_radius = c.number("reduced_radius_m", Range::positive(10.0), "m");
+  d.load_per_length = c.number("load_per_length_N_per_m", Range::positive(1e10), "N/m");
+  const auto u = c.number_pair("surface_speeds_m_per_s", Range::closed(0.0, 1e3), "m/s");
+  d.u1 = u[0];
+  d.u2 = u[1];
+  if (d.u1 + d.u2 <= 0.0)
+    throw InputError("contact.surface_speeds_m_per_s = [0, 0]: the entrainment speed must be positive");
+  d.reduced_modulus = c.number("reduced_modulus_Pa", {1e6, 1e16}, "Pa");
+  c.finish();
+  auto l = root.object("lubricant");
+  d.viscosity = l.number("viscosity_Pa_s", Range::positive(1e4), "Pa*s");
+  d.pressure_viscosity = l.number("pressure_viscosity_1_per_GPa", Range::closed(0.0, 100.0), "1/GPa") * 1e-9;
+  d.viscosity_model = l.optional_string("viscosity_model", {"roelands", "barus"}).value_or("roelands") == "barus"
+                          ? ehl::ViscosityModel::barus : ehl::ViscosityModel::roelands;
+  d.density_model = l.optional_string("density_model", {"dowson_higginson", "incompressible"})
+                                .value_or("dowson_higginson") == "incompressible"
+                        ? ehl::DensityModel::incompressible : ehl::DensityModel::dowson_higginson;
+  d.roelands_z = l.optional_number("roelands_z", Range::positive(2.0)).value_or(0.0);
+  l.finish();
+  return d;
+}
+
+ehl::LineContactData read_moes(model::ObjectReader& root) {
+  auto m = root.object("moes");
+  const double M = m.number("M", {1e-3, 1e4});
+  const double L = m.number("L", {0.0, 100.0});
+  m.finish();
+  return ehl::LineContactData::from_moes(M, L);
+}
+
+ehl::EhlOptions read_grid(model::ObjectReader& root) {
+  ehl::EhlOptions o;
+  if (!root.has("grid")) return o;
+  auto g = root.object("grid");
+  o.levels = g.optional_integer("levels", 1, 14).value_or(o.levels);
+  o.coarsest_nodes = g.optional_integer("coarsest_nodes", 9, 100001).value_or(o.coarsest_nodes);
+  if (auto nodes = g.optional_integer("nodes", 9, 1 << 20)) {
+    // nodes − 1 = (coarsest − 1)·2^(levels − 1): as many levels as keep ≥ 32 coarse intervals.
+    int intervals = *nodes - 1, levels = 1;
+    while (intervals % 2 == 0 && intervals / 2 >= 32) {
+      intervals /= 2;
+      ++levels;
+    }
+    if (levels == 1 && *nodes > 257)
+      throw InputError(fmt::format("grid.nodes = {}: use (n0 − 1)·2^k + 1 nodes (e.g. 1281, 4097) so "
+                                   "that multigrid has coarser grids", *nodes));
+    o.levels = levels;
+    o.coarsest_nodes = intervals + 1;
+  }
+  if (auto x = g.optional_number("x_in", {-1e3, 0.0, false, true})) o.x_in = *x;
+  if (auto x = g.optional_number("x_out", {0.0, 1e3, true, false})) o.x_out = *x;
+  if ((o.x_in == 0.0) != (o.x_out == 0.0))
+    throw InputError("grid.x_in, grid.x_out: give both or neither");
+  o.cycle = g.optional_string("cycle", {"V", "W"}).value_or("V") == "W" ? ehl::CycleType::W : ehl::CycleType::V;
+  o.max_cycles = g.optional_integer("max_cycles", 1, 100000).value_or(o.max_cycles);
+  o.tolerance = g.optional_number("tolerance", {0.0, 1.0, true, true}).value_or(o.tolerance);
+  g.finish();
+  return o;
+}
+
+/// Non-finite numbers become null: diagnostics of a failed solve may hold them.
+json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+json finite_vector(const std::vector<double>& v, double scale = 1.0) {
+  json out = json::array();
+  for (double x : v) out.push_back(finite_or_null(x * scale));
+  return out;
+}
+
+json result_json(const ehl::LineContactProblem& p, const ehl::EhlResult& r) {
+  const auto& d = p.data();
+  const double U_sum = d.viscosity * (d.u1 + d.u2) / (d.reduced_modulus * d.reduced_radius);
+  const double to_moes = 1.0 / (d.reduced_radius * std::sqrt(U_sum));
+  return {
+      {"kind", "ehl_line"},
+      {"h_central_m", finite_or_null(r.h_central)},
+      {"h_min_m", finite_or_null(r.h_min)},
+      {"x_h_min_m", finite_or_null(r.x_h_min)},
+      {"p_max_Pa", finite_or_null(r.p_max)},
+      {"h_dpdx0_m", finite_or_null(r.h_dpdx0)},
+      {"moes", {{"M", d.moes_M()}, {"L", d.moes_L()}, {"H_c", finite_or_null(r.h_central * to_moes)},
+                {"H_min", finite_or_null(r.h_min * to_moes)}, {"H_dpdx0", finite_or_null(r.h_dpdx0 * to_moes)}}},
+      {"hertz", {{"half_width_m", p.hertz_half_width()}, {"p_max_Pa", p.hertz_pressure()}}},
+      {"friction_force_per_length_N_per_m", finite_or_null(r.friction_force)},
+      {"friction_coefficient", finite_or_null(r.friction_coefficient)},
+      {"rheology", {{"viscosity", d.viscosity_model == ehl::ViscosityModel::barus ? "barus" : "roelands"},
+                    {"density", d.density_model == ehl::DensityModel::incompressible ? "incompressible" : "dowson_higginson"}}},
+      {"profile", {{"x_m", finite_vector(r.X, p.length_scale())},
+                   {"p_Pa", finite_vector(r.P, p.pressure_scale())},
+                   {"h_m", finite_vector(r.H, p.film_scale())}}},
+      {"diagnostics", {{"converged", r.converged}, {"cycles", r.cycles}, {"work_units", r.work_units},
+                       {"seconds", r.seconds}, {"nodes", r.X.size()},
+                       {"scaling", p.hertzian_scaling() ? "hertzian" : "rigid_isoviscous"},
+                       {"residual_history", finite_vector(r.residual_history)},
+                       {"force_balance_history", finite_vector(r.force_history)},
+                       {"seconds_per_level", finite_vector(r.seconds_per_level)},
+                       {"discretisation_error", {{"h_min_relative_change", finite_or_null(r.h_min_change)},
+                                                 {"p_max_relative_change", finite_or_null(r.p_max_change)}}}}},
+  };
+}
+
+json run_ehl_line(const json& case_json) {
+  model::ObjectReader root(case_json, "");
+  root.string("kind");
+  root.optional_string("description");
+  const bool moes = root.has("moes");
+  if (moes && (root.has("contact") || root.has("lubricant")))
+    throw InputError("moes: give either \"moes\" or \"contact\" + \"lubricant\", not both");
+  auto data = moes ? read_moes(root) : read_dimensional(root);
+  const auto options = read_grid(root);
+  root.finish();
+
+  const ehl::LineContactProblem problem(data);
+  const auto r = ehl::LineContactSolver(problem, options).try_solve();
+  auto out = result_json(problem, r);
+  if (moes) out["notes"] = json::array({"Moes input: Barus viscosity and an incompressible lubricant "
+                                        "(M and L fix neither p0 for Roelands nor the pressure level)"});
+  if (!r.converged)
+    throw ConvergenceError(fmt::format("EHL multigrid did not converge in {} cycles (residual {:.3e}, "
+                                       "force balance {:.3e}, tolerance {:.1e})", r.cycles,
+                                       r.residual_history.empty() ? 0.0 : r.residual_history.back(),
+                                       r.force_history.empty() ? 0.0 : r.force_history.back(), options.tolerance),
+                           out.dump(2));
+  return out;
+}
+
+const RegisterKind ehl_line_kind({"ehl_line", "steady isothermal line-contact EHL (FAS multigrid)", run_ehl_line});
+
+}  // namespace
+}  // namespace gearbench::app
