@@ -209,13 +209,21 @@ class Multigrid {
     const std::vector<double> injected = coarse.P;
     const int gamma = o_.cycle == CycleType::W ? 2 : 1;
     for (int c = 0; c < gamma; ++c) cycle(k - 1);
-    // Correction by linear interpolation, applied where the fine pressure is positive.
+    // Correction by linear interpolation, applied only inside the pressurised zone: not on
+    // cavitated nodes nor next to them, where the free boundary is the fine grid's to place
+    // (correcting there set up a limit cycle of the outlet on fine grids).
+    std::vector<double> correction(fine.n, 0.0);
     for (std::size_t I = 0; I + 1 < coarse.n; ++I) {
       const double d0 = coarse.P[I] - injected[I];
       const double d1 = coarse.P[I + 1] - injected[I + 1];
-      if (fine.P[2 * I] > 0.0) fine.P[2 * I] = std::max(0.0, fine.P[2 * I] + d0);
-      if (fine.P[2 * I + 1] > 0.0) fine.P[2 * I + 1] = std::max(0.0, fine.P[2 * I + 1] + 0.5 * (d0 + d1));
+      correction[2 * I] = d0;
+      correction[2 * I + 1] = 0.5 * (d0 + d1);
     }
+    std::vector<char> interior(fine.n, 0);
+    for (std::size_t i = 1; i + 1 < fine.n; ++i)
+      interior[i] = fine.P[i - 1] > 0.0 && fine.P[i] > 0.0 && fine.P[i + 1] > 0.0;
+    for (std::size_t i = 1; i + 1 < fine.n; ++i)
+      if (interior[i]) fine.P[i] = std::max(0.0, fine.P[i] + correction[i]);
     fine.P.front() = fine.P.back() = 0.0;
     for (int s = 0; s < o_.post_sweeps; ++s) relax(fine);
   }
