@@ -348,6 +348,15 @@ QuadCompliance energy_compliance_quadrature(const model::GearPair& pair,
           integrate_beam(beam, crack_at_load, axial)};
 }
 
+QuadLoadGeometry load_geometry_quadrature(const model::GearPair& pair, int gear, double s,
+                                          QuadBeamStart start) {
+  gsl_set_error_handler_off();
+  const Tooth tooth = tooth_of(pair, gear);
+  const double alpha1 = roll_angle(pair, tooth, gear, s) - tooth.alpha2;
+  const Beam beam = beam_of(tooth, start, alpha1);
+  return {beam.x0, beam.h0, involute_x(tooth, alpha1), involute_h(tooth, alpha1), alpha1};
+}
+
 double hertz_compliance_quadrature(const model::Material& m1, const model::Material& m2,
                                    double face_width) {
   if (!(face_width > 0.0) || !(m1.youngs_modulus > 0.0) || !(m2.youngs_modulus > 0.0))

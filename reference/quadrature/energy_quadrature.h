@@ -52,6 +52,15 @@ QuadCompliance energy_compliance_quadrature(const model::GearPair& pair,
 double hertz_compliance_quadrature(const model::Material& m1, const model::Material& m2,
                                    double face_width);
 
+/// Where the beam starts and where the load acts, for the fillet-foundation reference.
+struct QuadLoadGeometry {
+  double x0 = 0, h0 = 0;      ///< beam start (on the root circle, or where the fillets meet)
+  double x1 = 0, h1 = 0;      ///< load point on the flank
+  double alpha1 = 0;          ///< load angle α_1 [rad]
+};
+QuadLoadGeometry load_geometry_quadrature(const model::GearPair& pair, int gear, double s,
+                                          QuadBeamStart start);
+
 /// T1T2, T1C (from reference/closed_form) and the tip roll limits, found as the involute's
 /// crossing of the tip circle by Brent's method.
 QuadContactPath contact_path_quadrature(const model::GearPair& pair);

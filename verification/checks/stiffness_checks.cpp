@@ -8,6 +8,7 @@
 
 #include "check_registry.h"
 #include "closed_form/iso6336_stiffness.h"
+#include "closed_form/sainsot_foundation.h"
 #include "model/case_reader.h"
 #include "quadrature/energy_quadrature.h"
 #include "stiffness/mesh_stiffness.h"
@@ -109,6 +110,48 @@ void register_quadrature_check(const std::string& tag, stiffness::BeamStart star
       .unit = "-", .tolerance = {1e-6, 0}, .justification = gsl_why, .tier = Tier::fast,
       .run = [start, crack](const CheckContext& ctx) { return quadrature_agreement(seed003(ctx), start, crack); }});
 }
+
+// The fillet foundation and Hertz terms: the same closed forms, but on the reference's own
+// beam start, load point and load angle (the geometry is what can go wrong).
+const RegisterCheck foundation_agreement(CheckSpec{
+    .id = "stiffness.gsl.foundation", .section = section, .solver = solver,
+    .reference = "Sainsot on the reference's tooth geometry",
+    .quantity = "max relative difference of 1/k_f (both gears, 41 positions)", .unit = "-",
+    .tolerance = {1e-9, 0},
+    .justification = "one closed form on two independently derived geometries (Brent roots to 1e-14)",
+    .tier = Tier::fast, .run = [](const CheckContext& ctx) {
+      const auto c = seed003(ctx);
+      const GearPairGeometry g(c.pair);
+      const std::array<double, 2> bore{0.5 * g.radii(0).root, 0.5 * g.radii(1).root};
+      const stiffness::PairStiffness production(g, c.materials, stiffness::BeamStart::improved, bore,
+                                                std::nullopt, true);
+      double worst = 0.0;
+      const auto& p = g.path();
+      for (int i = 0; i <= 40; ++i) {
+        const double s = p.A + (p.E - p.A) * i / 40.0;
+        const auto prod = production.compliance(s);
+        for (int gear = 0; gear < 2; ++gear) {
+          const auto geometry = reference::load_geometry_quadrature(c.pair, gear, s, reference::QuadBeamStart::improved);
+          const double ref = reference::sainsot_foundation_compliance(
+              geometry, bore[static_cast<std::size_t>(gear)], c.materials[static_cast<std::size_t>(gear)].youngs_modulus, 1.0);
+          worst = std::max(worst, std::abs(prod.foundation[static_cast<std::size_t>(gear)] - ref) / std::abs(ref));
+        }
+      }
+      return CheckValue{worst, 0.0};
+    }});
+
+const RegisterCheck hertz_agreement(CheckSpec{
+    .id = "stiffness.gsl.hertz", .section = section, .solver = solver,
+    .reference = "Hertz line contact (reference)", .quantity = "relative difference of 1/k_h",
+    .unit = "-", .tolerance = {1e-14, 0}, .justification = "the same closed form: rounding only",
+    .tier = Tier::fast, .run = [](const CheckContext& ctx) {
+      const auto c = seed003(ctx);
+      const GearPairGeometry g(c.pair);
+      const stiffness::PairStiffness production(g, c.materials, stiffness::BeamStart::improved,
+                                                {0.5 * g.radii(0).root, 0.5 * g.radii(1).root}, std::nullopt, true);
+      const double ref = reference::hertz_compliance_quadrature(c.materials[0], c.materials[1], 1.0);
+      return CheckValue{std::abs(production.compliance(g.path().C).hertz - ref) / ref, 0.0};
+    }});
 
 const bool quadrature_checks = [] {
   register_quadrature_check("improved", stiffness::BeamStart::improved, std::nullopt);
