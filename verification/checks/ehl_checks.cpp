@@ -177,8 +177,26 @@ const bool moes_checks = [] {
 
 // --- Where the solver converges today -----------------------------------------------------
 
+void add_profile_figures(reports::Report& report) {
+  std::vector<reports::Series> pressure, film;
+  for (const auto& [M, L] : {std::pair{20.0, 10.0}, std::pair{100.0, 5.0}, std::pair{10.0, 0.0}}) {
+    const auto r = solve_moes(M, L);
+    const std::string label = fmt::format("M = {}, L = {}", M, L);
+    pressure.push_back({label, r.X, r.P});
+    std::vector<double> H = r.H;
+    const double h_min = *std::min_element(H.begin(), H.end());
+    for (auto& h : H) h /= h_min;
+    film.push_back({label, r.X, H});
+  }
+  report.figures.push_back({"ehl_pressure", section, "Dimensionless pressure P = p/p_h (641 nodes)",
+                            "X = x/b", "P", pressure});
+  report.figures.push_back({"ehl_film", section, "Film shape H/H_min (641 nodes)", "X = x/b", "H / H_min",
+                            film, true});
+}
+
 const RegisterSection ehl_section(SectionSpec{
     .id = "ehl", .tier = Tier::fast, .add = [](const CheckContext&, reports::Report& report) {
+      add_profile_figures(report);
       std::string rows;
       for (double M : {1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 300.0, 1000.0}) {
         rows += fmt::format("| {} |", M);
