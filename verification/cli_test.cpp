@@ -8,6 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace {
 
@@ -37,8 +38,14 @@ Outcome run_gearbench(const std::string& args) {
   return o;
 }
 
+/// A temporary path unique to this test process (ctest runs tests in parallel, and several
+/// builds may test at once).
+fs::path temp_path(const std::string& name) {
+  return fs::temp_directory_path() / ("gb_" + name + "_" + std::to_string(::getpid()));
+}
+
 std::string write_case(const std::string& name, const std::string& text) {
-  const auto path = fs::temp_directory_path() / ("gb_case_" + name + ".json");
+  const auto path = temp_path("case_" + name + ".json");
   std::ofstream(path) << text;
   return path.string();
 }
@@ -64,7 +71,7 @@ TEST(Cli, Seed004GeometryPrintsContactRatio) {
 }
 
 TEST(Cli, OutputFileAndVersion) {
-  const auto out = (fs::temp_directory_path() / "gb_cli_result.json").string();
+  const auto out = temp_path("cli_result.json").string();
   const auto o = run_gearbench("run " GEARBENCH_SOURCE_DIR "/cases/seed000_herringbone_geometry.json -o " + out);
   ASSERT_EQ(o.exit_code, 0) << o.err;
   std::ifstream in(out);
@@ -202,7 +209,7 @@ TEST(Cli, EhlLineRunsAndReportsNonConvergence) {
   std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/ehl_moes_M20_L10.json");
   auto j = json::parse(in);
   j["grid"]["max_cycles"] = 1;
-  const auto out = (fs::temp_directory_path() / "gb_ehl_unconverged.json").string();
+  const auto out = temp_path("ehl_unconverged.json").string();
   const auto failed = run_gearbench("run " + write_case("ehl_one_cycle", j.dump()) + " -o " + out);
   EXPECT_EQ(failed.exit_code, 3) << failed.err;
   EXPECT_EQ(failed.err.rfind("error: EHL multigrid did not converge in 1 cycles", 0), 0u) << failed.err;
@@ -250,7 +257,7 @@ TEST(Cli, MissingFileAndBadArguments) {
 }
 
 TEST(Cli, VerifyTwiceThenCompare) {
-  const auto dir = fs::temp_directory_path() / "gb_cli_verify";
+  const auto dir = temp_path("cli_verify");
   fs::remove_all(dir);
   const auto first = run_gearbench("verify --out " + dir.string());
   ASSERT_EQ(first.exit_code, 0) << first.err;
@@ -279,7 +286,7 @@ TEST(Cli, VerifyTwiceThenCompare) {
 TEST(Cli, BenchRecordsContextAndRatio) {
   const std::string bench_exe = GEARBENCH_BINARY_DIR "/benchmarks/gearbench_benchmarks";
   if (!fs::exists(bench_exe)) GTEST_SKIP() << "benchmarks not built in this preset";
-  const auto dir = fs::temp_directory_path() / "gb_cli_bench";
+  const auto dir = temp_path("cli_bench");
   fs::remove_all(dir);
   const auto o = run_gearbench("bench --filter BM_GeometryProfile --min-time 0.01 --out " + dir.string());
   ASSERT_EQ(o.exit_code, 0) << o.err;

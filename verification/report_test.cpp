@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
+#include <unistd.h>
 
 #include "compare.h"
 #include "report.h"
@@ -75,7 +77,7 @@ TEST(Compare, FlagsRegressionsChangesAndTimings) {
 }
 
 TEST(WriteReport, NeverOverwritesAndLeavesNoTemporary) {
-  const auto dir = std::filesystem::temp_directory_path() / "gearbench_report_test";
+  const auto dir = std::filesystem::temp_directory_path() / ("gearbench_report_test_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   Report r;
   r.tier = "fast";
