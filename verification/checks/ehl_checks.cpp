@@ -127,6 +127,55 @@ const RegisterCheck martin_order(CheckSpec{
       return CheckValue{std::log2((c4 - c5) / (c5 - c6)), 1.0};
     }});
 
+// --- Grid convergence -------------------------------------------------------------------------
+
+struct GridSeries {
+  std::vector<double> nodes, H_c, H_min, p_max;
+};
+
+/// M = 10, L = 0 on 257 … 8193 nodes (33 coarsest nodes, 4 … 9 levels).
+GridSeries grid_series() {
+  const auto d = LineContactData::from_moes(10.0, 0.0);
+  const LineContactProblem p(d);
+  const double U_sum = d.viscosity * (d.u1 + d.u2) / (d.reduced_modulus * d.reduced_radius);
+  const double to_moes = 1.0 / (d.reduced_radius * std::sqrt(U_sum));
+  GridSeries g;
+  for (int levels = 4; levels <= 9; ++levels) {
+    EhlOptions o;
+    o.levels = levels;
+    o.coarsest_nodes = 33;
+    const auto r = LineContactSolver(p, o).solve();
+    g.nodes.push_back(static_cast<double>(r.X.size()));
+    g.H_c.push_back(r.h_central * to_moes);
+    g.H_min.push_back(r.h_min * to_moes);
+    g.p_max.push_back(r.p_max / p.hertz_pressure());
+  }
+  return g;
+}
+
+double observed_order(const std::vector<double>& v) {
+  const std::size_t n = v.size();
+  return std::log2((v[n - 3] - v[n - 2]) / (v[n - 2] - v[n - 1]));
+}
+
+double richardson(const std::vector<double>& v) { return 2.0 * v.back() - v[v.size() - 2]; }
+
+const RegisterCheck grid_convergence(CheckSpec{
+    .id = "ehl.grid_convergence.order", .section = section, .solver = solver,
+    .reference = "first-order upwind wedge (stated order 1)",
+    .quantity = "observed order of H_c, 2049/4097/8193 nodes, M = 10, L = 0", .unit = "-",
+    .tolerance = {0.15, 0},
+    .justification = "first-order scheme in its asymptotic range: the order of the last three "
+                     "grids must be 1 within the drift seen between successive triples",
+    .tier = Tier::fast, .run = [](const CheckContext&) {
+      const auto g = grid_series();
+      return CheckValue{observed_order(g.H_c), 1.0,
+                        {{"nodes", g.nodes}, {"H_c", g.H_c}, {"H_min", g.H_min}, {"p_max_over_p_h", g.p_max},
+                         {"order_H_min", observed_order(g.H_min)}, {"order_p_max", observed_order(g.p_max)},
+                         {"richardson", {{"H_c", richardson(g.H_c)}, {"H_min", richardson(g.H_min)},
+                                         {"p_max_over_p_h", richardson(g.p_max)}}}}};
+    }});
+
 // --- Hertz limit and Moes ---------------------------------------------------------------------
 
 EhlResult solve_moes(double M, double L) {
@@ -177,6 +226,20 @@ const bool moes_checks = [] {
 
 // --- Where the solver converges today -----------------------------------------------------
 
+void add_convergence_table(reports::Report& report) {
+  const auto g = grid_series();
+  std::string rows;
+  for (std::size_t i = 0; i < g.nodes.size(); ++i)
+    rows += fmt::format("| {} | {:.6f} | {:.6f} | {:.6f} |\n", g.nodes[i], g.H_c[i], g.H_min[i], g.p_max[i]);
+  rows += fmt::format("| Richardson (2 finest) | {:.6f} | {:.6f} | {:.6f} |\n", richardson(g.H_c),
+                      richardson(g.H_min), richardson(g.p_max));
+  rows += fmt::format("| observed order (3 finest) | {:.3f} | {:.3f} | {:.3f} |\n", observed_order(g.H_c),
+                      observed_order(g.H_min), observed_order(g.p_max));
+  report.notes.push_back({section, fmt::format(
+      "**Grid convergence** at M = 10, L = 0 (Moes H = {:.4f}), in Moes units and p/p_h:\n\n"
+      "| nodes | H_c | H_min | p_max/p_h |\n|---|---|---|---|\n{}", reference::moes_H(10.0, 0.0), rows)});
+}
+
 void add_profile_figures(reports::Report& report) {
   std::vector<reports::Series> pressure, film;
   for (const auto& [M, L] : {std::pair{20.0, 10.0}, std::pair{100.0, 5.0}, std::pair{10.0, 0.0}}) {
@@ -197,6 +260,7 @@ void add_profile_figures(reports::Report& report) {
 const RegisterSection ehl_section(SectionSpec{
     .id = "ehl", .tier = Tier::fast, .add = [](const CheckContext&, reports::Report& report) {
       add_profile_figures(report);
+      add_convergence_table(report);
       std::string rows;
       for (double M : {1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 300.0, 1000.0}) {
         rows += fmt::format("| {} |", M);
