@@ -1,0 +1,51 @@
+#pragma once
+// The FAS multigrid machinery shared by the steady and the transient line-contact solvers
+// (Venner & Lubrecht 2000, ch. 6–7): grid hierarchy, relaxation, coarse-grid correction,
+// force balance through H0. The contact state generalises the steady problem of
+// LineContactProblem by the factors of a transient along a gear mesh (seed 004's C_R, C_u,
+// C_w, here relative to the problem's reference contact):
+//   H = H0 + κ·X²/2 − (D/π)∫ln|X − X'|P dX',
+//   d/dX(ε dP/dX) − υ·d(ρ̄H)/dX − (ρ̄H − (ρ̄H)_old)/ΔT = 0,   ∫P dX = F,
+// with κ = R_ref/R, υ = ū/ū_ref, T = t·ū_ref/ℓ and implicit Euler in time.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "line_contact_solver.h"
+
+namespace gearbench::ehl {
+
+struct ContactState {
+  double curvature = 1.0;   ///< κ = R_ref/R
+  double speed = 1.0;       ///< υ = ū/ū_ref
+  double load = 0.0;        ///< F = ∫P dX; 0 takes the problem's load
+  double time_step = 0.0;   ///< ΔT; 0 is steady
+  std::vector<double> rho_h_old;  ///< (ρ̄H) of the previous step on the finest grid
+};
+
+/// A previous solution to start from instead of full multigrid.
+struct WarmStart {
+  std::vector<double> P;
+  double H0 = 0.0;
+  double film_scale = 0.0;  ///< typical film for the rigid-scaling H0 update (0: estimate)
+};
+
+class FasMultigrid {
+ public:
+  FasMultigrid(const LineContactProblem& problem, const EhlOptions& options, ContactState state);
+  ~FasMultigrid();
+  FasMultigrid(const FasMultigrid&) = delete;
+  FasMultigrid& operator=(const FasMultigrid&) = delete;
+
+  /// Full multigrid (or the warm start), then cycles to the tolerance; unconverged results
+  /// come back with converged = false.
+  EhlResult solve(const std::optional<WarmStart>& warm = std::nullopt);
+  /// ρ̄H on the finest grid of the current solution (the next step's (ρ̄H)_old).
+  std::vector<double> rho_h();
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace gearbench::ehl
