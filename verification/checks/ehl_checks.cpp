@@ -8,6 +8,7 @@
 #include "check_registry.h"
 #include "closed_form/ehl_closed_form.h"
 #include "ehl/deformation.h"
+#include "ehl/fas_multigrid.h"
 #include "ehl/line_contact_solver.h"
 
 namespace gearbench::verification {
@@ -125,6 +126,70 @@ const RegisterCheck martin_order(CheckSpec{
     .tier = Tier::fast, .run = [](const CheckContext&) {
       const double c4 = martin_constant(4), c5 = martin_constant(5), c6 = martin_constant(6);
       return CheckValue{std::log2((c4 - c5) / (c5 - c6)), 1.0};
+    }});
+
+// --- Transient machinery ----------------------------------------------------------------------
+
+// An implicit-Euler step with nothing changed must return the steady solution at once.
+const RegisterCheck transient_identity(CheckSpec{
+    .id = "ehl.transient.constant_state", .section = section, .solver = solver,
+    .reference = "the steady solution", .quantity = "max |P(step) − P(steady)|, M = 20, L = 5, ΔT = 1",
+    .unit = "-", .tolerance = {1e-7, 0},
+    .justification = "the squeeze term vanishes for an unchanged film: only the 1e-8 solver tolerance remains",
+    .tier = Tier::fast, .run = [](const CheckContext&) {
+      const LineContactProblem p(LineContactData::from_moes(20.0, 5.0));
+      EhlOptions o;
+      o.levels = 4;
+      FasMultigrid steady(p, o, ContactState{});
+      const auto s = steady.solve();
+      ContactState state;
+      state.time_step = 1.0;
+      state.rho_h_old = steady.rho_h();
+      FasMultigrid step(p, o, state);
+      const auto t = step.solve(WarmStart{s.P, s.H0, 0.0});
+      double worst = 0.0;
+      for (std::size_t i = 0; i < s.P.size(); ++i) worst = std::max(worst, std::abs(t.P[i] - s.P[i]));
+      return CheckValue{worst, 0.0, {{"cycles", t.cycles}}};
+    }});
+
+// Pure squeeze of a rigid cylinder, isoviscous (υ = 0): ε dP/dX = Ḣ0·X integrates to
+// P = −λḢ0/(2H²) and ∫P dX = −λḢ0·π√2/(4H0^(3/2)) on an infinite domain, i.e. w =
+// 3√2·π·η·R^(3/2)(−ḣ0)/h0^(3/2) (reference/closed_form). One implicit step from H0 = 1
+// must land on that approach speed at the new H0.
+const RegisterCheck transient_squeeze(CheckSpec{
+    .id = "ehl.transient.rigid_squeeze", .section = section, .solver = solver,
+    .reference = "rigid isoviscous squeeze, closed form",
+    .quantity = "relative error of Ḣ0 after one implicit step (1281 nodes on [−20, 20])", .unit = "-",
+    .tolerance = {3e-3, 0},
+    .justification = "1.0e-2, 2.8e-3, 1.0e-3 on 321, 641, 1281 nodes (order ~1.7); the cut "
+                     "at |X| = 20 loses ~1e-4 of the load",
+    .tier = Tier::fast, .run = [](const CheckContext&) {
+      const auto d = rigid_isoviscous();
+      const LineContactProblem p(d);
+      EhlOptions o;
+      o.levels = 6;
+      o.x_in = -20.0;
+      o.x_out = 20.0;
+      const double H0_old = 1.0, dT = 0.5;
+      const std::size_t n = static_cast<std::size_t>((o.coarsest_nodes - 1) * (1 << (o.levels - 1)) + 1);
+      const double h = 40.0 / static_cast<double>(n - 1);
+      ContactState state;
+      state.speed = 0.0;
+      state.time_step = dT;
+      std::vector<double> start(n);
+      state.rho_h_old.resize(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const double x = -20.0 + static_cast<double>(i) * h;
+        state.rho_h_old[i] = H0_old + 0.5 * x * x;
+        start[i] = 0.1 / std::pow(state.rho_h_old[i], 2);
+      }
+      start.front() = start.back() = 0.0;
+      FasMultigrid mg(p, o, state);
+      const auto r = mg.solve(WarmStart{start, 0.9 * H0_old, H0_old});
+      if (!r.converged) throw std::runtime_error("squeeze step did not converge");
+      const double rate = (r.H0 - H0_old) / dT;
+      const double closed = -4.0 * p.load() * std::pow(r.H0, 1.5) / (p.lambda() * M_PI * std::sqrt(2.0));
+      return CheckValue{rate / closed - 1.0, 0.0, {{"H0", r.H0}, {"cycles", r.cycles}}};
     }});
 
 // --- Grid convergence -------------------------------------------------------------------------
