@@ -42,7 +42,8 @@ bool render_svg(const Figure& figure, const std::string& svg_path) {
     }
     gp << "plot ";
     for (std::size_t i = 0; i < figure.series.size(); ++i)
-      gp << (i ? ", " : "") << "$d" << i << " using 1:2 with lines lw 2 title "
+      gp << (i ? ", " : "") << "$d" << i << " using 1:2 with " << (figure.impulses ? "impulses" : "lines")
+         << " lw 2 title "
          << quoted(figure.series[i].label);
     gp << "\n";
   }

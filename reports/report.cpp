@@ -162,7 +162,7 @@ json to_json(const Report& report) {
     }
     figures.push_back({{"id", f.id}, {"section", f.section}, {"title", f.title},
                        {"xlabel", f.xlabel}, {"ylabel", f.ylabel}, {"series", series},
-                       {"log_y", f.log_y},
+                       {"log_y", f.log_y}, {"impulses", f.impulses},
                        {"file", "figures/" + f.id + ".svg"}});
   }
   json notes = json::array();

@@ -58,6 +58,7 @@ struct Figure {
   std::string ylabel;
   std::vector<Series> series;
   bool log_y = false;
+  bool impulses = false;  ///< spectra: one vertical line per bin
 };
 
 /// Free text for a section (e.g. what a seed reproduction reached and why it differs).

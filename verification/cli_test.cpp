@@ -240,6 +240,35 @@ TEST(Cli, EhlLineBadInput) {
   }
 }
 
+TEST(Cli, DynamicsRunsAndValidates) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics.json");
+  auto j = json::parse(in);
+  j["runup_cycles"] = 4;
+  j["record_cycles"] = 4;
+  const auto o = run_gearbench("run " + write_case("dynamics_short", j.dump()));
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  EXPECT_EQ(r["transmission_error_m"].size(), 4u * 64u);
+  EXPECT_NEAR(r["mesh_frequency_Hz"].get<double>(), 332.0, 0.5);
+  EXPECT_GT(r["dynamic_factor"].get<double>(), 1.0);
+  EXPECT_EQ(r["natural_frequencies_Hz"].size(), 5u);
+  const std::pair<std::function<void(json&)>, std::string> bad[] = {
+      {[](json& c) { c["model"] = "herringbone12"; }, "model = \"herringbone12\": allowed values are spur6"},
+      {[](json& c) { c["friction"]["mu"] = 0.9; }, "friction.mu = 0.9: allowed range is [0, 0.5]"},
+      {[](json& c) { c.erase("operating"); }, "operating: missing required key"},
+      {[](json& c) { c["gear_pair"]["helix_angle_deg"] = 10; }, "helix_angle_deg must be 0"},
+      {[](json& c) { c["samples_per_cycle"] = 4; }, "samples_per_cycle = 4: allowed range is [8, 4096]"},
+  };
+  int n = 0;
+  for (const auto& [edit, expected] : bad) {
+    auto c = j;
+    edit(c);
+    const auto e = run_gearbench("run " + write_case("dynamics_bad_" + std::to_string(n++), c.dump()));
+    EXPECT_EQ(e.exit_code, 2) << e.err;
+    EXPECT_NE(e.err.find(expected), std::string::npos) << e.err;
+  }
+}
+
 TEST(Cli, MalformedJsonGivesLine) {
   const auto o = run_gearbench("run " + write_case("malformed", "{\n  \"kind\": \"geometry\",\n  \"gear_pair\": {,\n}\n"));
   EXPECT_EQ(o.exit_code, 2);

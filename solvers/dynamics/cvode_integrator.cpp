@@ -1,0 +1,118 @@
+#include "cvode_integrator.h"
+
+#include <cvode/cvode.h>
+#include <fmt/format.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <stdexcept>
+
+#include "model/errors.h"
+
+namespace gearbench::dynamics {
+
+struct CvodeIntegrator::Handles {
+  SUNContext context = nullptr;
+  N_Vector y = nullptr;
+  SUNMatrix matrix = nullptr;
+  SUNLinearSolver solver = nullptr;
+  void* cvode = nullptr;
+};
+
+namespace {
+
+void check_flag(int flag, const char* call) {
+  if (flag >= 0) return;
+  const std::string message = fmt::format("SUNDIALS {} failed: {} ({})", call, CVodeGetReturnFlagName(flag), flag);
+  if (flag == CV_TOO_MUCH_WORK || flag == CV_TOO_MUCH_ACC || flag == CV_ERR_FAILURE ||
+      flag == CV_CONV_FAILURE)
+    throw ConvergenceError(message);
+  throw std::runtime_error(message);
+}
+
+template <class T>
+T* check_pointer(T* pointer, const char* call) {
+  if (pointer == nullptr) throw std::runtime_error(fmt::format("SUNDIALS {} returned no object", call));
+  return pointer;
+}
+
+int rhs_trampoline(realtype t, N_Vector y, N_Vector ydot, void* user_data) {
+  try {
+    const auto& rhs = *static_cast<const CvodeIntegrator::Rhs*>(user_data);
+    rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+    return 0;
+  } catch (...) {
+    return -1;  // unrecoverable: CVODE reports CV_RHSFUNC_FAIL
+  }
+}
+
+}  // namespace
+
+CvodeIntegrator::CvodeIntegrator(std::size_t size, Rhs rhs, const CvodeOptions& options)
+    : handles_(new Handles), rhs_(std::move(rhs)), y_(size, 0.0) {
+  try {
+    check_flag(SUNContext_Create(nullptr, &handles_->context), "SUNContext_Create");
+    const auto n = static_cast<sunindextype>(size);
+    handles_->y = check_pointer(N_VNew_Serial(n, handles_->context), "N_VNew_Serial");
+    handles_->cvode = check_pointer(
+        CVodeCreate(options.method == CvodeMethod::bdf ? CV_BDF : CV_ADAMS, handles_->context), "CVodeCreate");
+    check_flag(CVodeInit(handles_->cvode, rhs_trampoline, 0.0, handles_->y), "CVodeInit");
+    check_flag(CVodeSStolerances(handles_->cvode, options.relative_tolerance, options.absolute_tolerance),
+               "CVodeSStolerances");
+    check_flag(CVodeSetUserData(handles_->cvode, &rhs_), "CVodeSetUserData");
+    check_flag(CVodeSetMaxNumSteps(handles_->cvode, options.max_steps), "CVodeSetMaxNumSteps");
+    handles_->matrix = check_pointer(SUNDenseMatrix(n, n, handles_->context), "SUNDenseMatrix");
+    handles_->solver = check_pointer(SUNLinSol_Dense(handles_->y, handles_->matrix, handles_->context), "SUNLinSol_Dense");
+    check_flag(CVodeSetLinearSolver(handles_->cvode, handles_->solver, handles_->matrix), "CVodeSetLinearSolver");
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
+CvodeIntegrator::~CvodeIntegrator() { release(); }
+
+void CvodeIntegrator::release() {
+  if (!handles_) return;
+  if (handles_->cvode) CVodeFree(&handles_->cvode);
+  if (handles_->solver) SUNLinSolFree(handles_->solver);
+  if (handles_->matrix) SUNMatDestroy(handles_->matrix);
+  if (handles_->y) N_VDestroy(handles_->y);
+  if (handles_->context) SUNContext_Free(&handles_->context);
+  delete handles_;
+  handles_ = nullptr;
+}
+
+void CvodeIntegrator::reset(double t0, const std::vector<double>& y0) {
+  if (y0.size() != y_.size()) throw std::invalid_argument("CvodeIntegrator::reset: wrong state size");
+  y_ = y0;
+  std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(handles_->y));
+  check_flag(CVodeReInit(handles_->cvode, t0, handles_->y), "CVodeReInit");
+  initialised_ = true;
+}
+
+const std::vector<double>& CvodeIntegrator::advance(double t_out, double stop) {
+  if (!initialised_) throw std::logic_error("CvodeIntegrator::advance before reset");
+  check_flag(CVodeSetStopTime(handles_->cvode, stop), "CVodeSetStopTime");
+  realtype t = 0.0;
+  check_flag(CVode(handles_->cvode, t_out, handles_->y, &t, CV_NORMAL), "CVode");
+  const double* data = N_VGetArrayPointer(handles_->y);
+  std::copy(data, data + y_.size(), y_.begin());
+  return y_;
+}
+
+long CvodeIntegrator::steps() const {
+  long n = 0;
+  check_flag(CVodeGetNumSteps(handles_->cvode, &n), "CVodeGetNumSteps");
+  return n;
+}
+
+long CvodeIntegrator::rhs_evaluations() const {
+  long n = 0;
+  check_flag(CVodeGetNumRhsEvals(handles_->cvode, &n), "CVodeGetNumRhsEvals");
+  return n;
+}
+
+}  // namespace gearbench::dynamics

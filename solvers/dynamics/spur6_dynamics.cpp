@@ -1,0 +1,281 @@
+#include "spur6_dynamics.h"
+
+#include <Eigen/Dense>
+#include <fftw3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <fmt/format.h>
+#include <numbers>
+#include <numeric>
+
+#include "model/errors.h"
+
+namespace gearbench::dynamics {
+
+namespace {
+constexpr double pi = std::numbers::pi;
+constexpr int spline_nodes = 1025;
+}  // namespace
+
+void Spur6Options::validate() const {
+  auto positive = [](double v, const char* key) {
+    if (!(v > 0.0)) throw InputError(fmt::format("{} = {}: must be > 0", key, v));
+  };
+  positive(bearing_stiffness, "bearings.stiffness_N_per_m");
+  if (!(bearing_damping >= 0.0))
+    throw InputError(fmt::format("bearings.damping_N_s_per_m = {}: must be >= 0", bearing_damping));
+  if (!(mesh_damping_ratio >= 0.0 && mesh_damping_ratio <= 1.0))
+    throw InputError(fmt::format("mesh_damping_ratio = {}: allowed range is [0, 1]", mesh_damping_ratio));
+  if (!(friction_coefficient >= 0.0 && friction_coefficient <= 0.5))
+    throw InputError(fmt::format("friction.mu = {}: allowed range is [0, 0.5]", friction_coefficient));
+  if (runup_cycles < 0 || runup_cycles > 1000000)
+    throw InputError(fmt::format("runup_cycles = {}: allowed range is [0, 1000000]", runup_cycles));
+  if (record_cycles < 2 || record_cycles > 1000000)
+    throw InputError(fmt::format("record_cycles = {}: allowed range is [2, 1000000]", record_cycles));
+  if (samples_per_cycle < 8 || samples_per_cycle > 4096)
+    throw InputError(fmt::format("samples_per_cycle = {}: allowed range is [8, 4096]", samples_per_cycle));
+}
+
+Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
+                             const std::array<model::Material, 2>& materials,
+                             const model::OperatingPoint& operating, Spur6Options options)
+    : geometry_(geometry),
+      options_((options.validate(), std::move(options))),
+      pair_(geometry, materials, stiffness::BeamStart::improved,
+            {0.5 * geometry.radii(0).root, 0.5 * geometry.radii(1).root}, options_.crack, true) {
+  if (geometry_.base_helix_angle() > 0.0)
+    throw InputError("model = \"spur6\": gear_pair.helix_angle_deg must be 0 (spur pairs)");
+  const auto& pair = geometry_.pair();
+  // Solid discs of the reference diameter (docs/dynamics-model.md, inertia of the blanks).
+  auto disc = [&](int gear, double& m, double& I) {
+    const double r = geometry_.radii(gear).reference;
+    m = materials[static_cast<std::size_t>(gear)].density * pi * r * r * pair.face_width;
+    I = 0.5 * m * r * r;
+  };
+  disc(0, p_.m1, p_.I1);
+  disc(1, p_.m2, p_.I2);
+  p_.rb1 = geometry_.radii(0).base;
+  p_.rb2 = geometry_.radii(1).base;
+  p_.k_bearing = options_.bearing_stiffness;
+  p_.c_bearing = options_.bearing_damping;
+  p_.T1 = operating.pinion_torque;
+  p_.mu = options_.friction_coefficient;
+  p_.zeta_mesh = options_.mesh_damping_ratio;
+  const auto& path = geometry_.path();
+  p_.A = path.A;
+  p_.C = path.C;
+  p_.E = path.E;
+  p_.T1T2 = path.T2;
+  p_.pbt = geometry_.base_pitch_transverse();
+  p_.contact_speed = operating.pinion_speed * p_.rb1;
+  p_.z1 = pair.teeth[0];
+  if (geometry_.contact_ratio_transverse() >= 2.0)
+    throw InputError("gear_pair: the spur6 model handles 1 <= contact ratio < 2 (one or two pairs)");
+
+  std::vector<double> s(spline_nodes), k(spline_nodes);
+  for (int i = 0; i < spline_nodes; ++i) {
+    s[static_cast<std::size_t>(i)] = p_.A + (p_.E - p_.A) * i / (spline_nodes - 1);
+    k[static_cast<std::size_t>(i)] = pair.face_width * pair_.stiffness_per_width(s[static_cast<std::size_t>(i)], true);
+  }
+  healthy_.emplace(std::move(s), std::move(k));
+  double sum = 0.0;
+  constexpr int samples = 720;
+  for (int i = 0; i < samples; ++i) {
+    const double s0 = p_.A + p_.pbt * i / samples;
+    for (double t = s0; t <= p_.E; t += p_.pbt) sum += pair_stiffness(t);
+  }
+  p_.mean_mesh_stiffness = sum / samples;
+  const double me = p_.I1 * p_.I2 / (p_.I1 * p_.rb2 * p_.rb2 + p_.I2 * p_.rb1 * p_.rb1);
+  p_.mesh_damping = 2.0 * p_.zeta_mesh * std::sqrt(p_.mean_mesh_stiffness * me);
+}
+
+double Spur6Dynamics::pair_stiffness(double s, bool cracked_tooth) const {
+  if (cracked_tooth) return geometry_.pair().face_width * pair_.stiffness_per_width(s, false);
+  return (*healthy_)(std::clamp(s, p_.A, p_.E));
+}
+
+// Pairs of the interval holding t_mid (docs/dynamics-model.md, "Mesh"): n whole base pitches
+// have passed; pair j, j base pitches ahead of the newest, carries pinion tooth (n − j) mod z1.
+Spur6Dynamics::MeshState Spur6Dynamics::mesh(double t, double t_mid, const double* y) const {
+  const double u = p_.contact_speed;
+  const double n = std::floor(u * t_mid / p_.pbt);
+  const double delta = y[0] + p_.rb1 * y[2] - y[3] - p_.rb2 * y[5];
+  const double delta_rate = y[6] + p_.rb1 * y[8] - y[9] - p_.rb2 * y[11];
+  MeshState m;
+  m.delta = delta;
+  for (int j = 0; j < 3; ++j) {
+    const double s_mid = p_.A + u * t_mid - n * p_.pbt + j * p_.pbt;
+    if (s_mid < p_.A || s_mid > p_.E) continue;
+    const double s = p_.A + u * t - n * p_.pbt + j * p_.pbt;
+    const long tooth = static_cast<long>(n) - j;
+    const bool cracked = options_.crack && options_.crack->crack.length > 0.0 && ((tooth % p_.z1) + p_.z1) % p_.z1 == 0;
+    const double k = pair_stiffness(s, cracked);
+    const double force = k * delta + p_.mesh_damping * k / p_.mean_mesh_stiffness * delta_rate;
+    const double lambda = s < p_.C ? 1.0 : (s > p_.C ? -1.0 : 0.0);
+    m.force += force;
+    m.friction += p_.mu * lambda * force;
+    m.moment1 += p_.mu * lambda * force * s;
+    m.moment2 += p_.mu * lambda * force * (p_.T1T2 - s);
+  }
+  return m;
+}
+
+// docs/dynamics-model.md, "Equations of motion" (seed 003 eq. 12).
+void Spur6Dynamics::derivative(double t, double t_mid, const double* y, double* dydt) const {
+  const MeshState m = mesh(t, t_mid, y);
+  const double T2 = p_.T1 * p_.rb2 / p_.rb1;
+  for (int i = 0; i < 6; ++i) dydt[i] = y[6 + i];
+  dydt[6] = (-m.force - p_.c_bearing * y[6] - p_.k_bearing * y[0]) / p_.m1;
+  dydt[7] = (-m.friction - p_.c_bearing * y[7] - p_.k_bearing * y[1]) / p_.m1;
+  dydt[8] = (p_.T1 - p_.rb1 * m.force - m.moment1) / p_.I1;
+  dydt[9] = (m.force - p_.c_bearing * y[9] - p_.k_bearing * y[3]) / p_.m2;
+  dydt[10] = (m.friction - p_.c_bearing * y[10] - p_.k_bearing * y[4]) / p_.m2;
+  dydt[11] = (p_.rb2 * m.force + m.moment2 - T2) / p_.I2;
+}
+
+std::vector<double> Spur6Dynamics::static_state() const {
+  const double F0 = p_.T1 / p_.rb1;
+  const double delta0 = F0 / p_.mean_mesh_stiffness;
+  std::vector<double> y(12, 0.0);
+  y[0] = -F0 / p_.k_bearing;
+  y[3] = F0 / p_.k_bearing;
+  y[2] = (delta0 - y[0] + y[3]) / p_.rb1;
+  return y;
+}
+
+// Entry of a pair at u·t ≡ 0 and exit of the leading pair at u·t ≡ E − A − p_bt (mod p_bt).
+std::vector<double> Spur6Dynamics::switch_times(double t0, double t1) const {
+  const double period = p_.pbt / p_.contact_speed;
+  const double exit_offset = (p_.E - p_.A - p_.pbt) / p_.contact_speed;
+  std::vector<double> times;
+  for (double base = std::floor(t0 / period) * period; base < t1 + period; base += period)
+    for (const double t : {base, base + exit_offset})
+      if (t > t0 && t < t1) times.push_back(t);
+  std::sort(times.begin(), times.end());
+  return times;
+}
+
+std::vector<double> Spur6Dynamics::natural_frequencies() const {
+  Eigen::Matrix<double, 6, 6> M = Eigen::Matrix<double, 6, 6>::Zero(), K = M;
+  M.diagonal() << p_.m1, p_.m1, p_.I1, p_.m2, p_.m2, p_.I2;
+  K.diagonal() << p_.k_bearing, p_.k_bearing, 0.0, p_.k_bearing, p_.k_bearing, 0.0;
+  Eigen::Matrix<double, 6, 1> v;
+  v << 1.0, 0.0, p_.rb1, -1.0, 0.0, -p_.rb2;  // δ = v·q
+  K += p_.mean_mesh_stiffness * v * v.transpose();
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> solver(K, M);
+  std::vector<double> f;
+  const double scale = solver.eigenvalues().maxCoeff();
+  for (int i = 0; i < 6; ++i)
+    if (solver.eigenvalues()(i) > 1e-10 * scale) f.push_back(std::sqrt(solver.eigenvalues()(i)) / (2.0 * pi));
+  return f;
+}
+
+namespace {
+
+Spur6Result::Stats statistics(const std::vector<double>& v) {
+  Spur6Result::Stats s;
+  const double n = static_cast<double>(v.size());
+  s.mean = std::accumulate(v.begin(), v.end(), 0.0) / n;
+  double sq = 0.0;
+  for (double x : v) sq += x * x;
+  s.rms = std::sqrt(sq / n);
+  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+  s.peak_to_peak = *hi - *lo;
+  return s;
+}
+
+/// One-sided amplitude spectrum of v − mean(v) by FFTW (no window: the record holds whole periods).
+void amplitude_spectrum(const std::vector<double>& v, double dt, std::vector<double>& f, std::vector<double>& a) {
+  const int n = static_cast<int>(v.size());
+  std::vector<double> in(v);
+  const double mean = std::accumulate(in.begin(), in.end(), 0.0) / n;
+  for (auto& x : in) x -= mean;
+  std::vector<std::complex<double>> out(static_cast<std::size_t>(n / 2 + 1));
+  fftw_plan plan = fftw_plan_dft_r2c_1d(n, in.data(), reinterpret_cast<fftw_complex*>(out.data()), FFTW_ESTIMATE);
+  fftw_execute(plan);
+  fftw_destroy_plan(plan);
+  f.resize(out.size());
+  a.resize(out.size());
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    f[k] = static_cast<double>(k) / (n * dt);
+    a[k] = (k == 0 ? 1.0 : 2.0) * std::abs(out[k]) / n;
+  }
+}
+
+}  // namespace
+
+Spur6Result Spur6Dynamics::solve() const {
+  const auto start = std::chrono::steady_clock::now();
+  const bool cracked = options_.crack && options_.crack->crack.length > 0.0;
+  const double T_mesh = p_.pbt / p_.contact_speed;
+  // With a cracked tooth the response repeats once per revolution (z1 mesh cycles).
+  const int period_cycles = cracked ? p_.z1 : 1;
+  const int runup = (options_.runup_cycles + period_cycles - 1) / period_cycles * period_cycles;
+  const int record = std::max(options_.record_cycles, 2 * period_cycles) / period_cycles * period_cycles;
+  const double t_record = runup * T_mesh;
+  const double t_end = (runup + record) * T_mesh;
+  const double dt = T_mesh / options_.samples_per_cycle;
+  const auto samples = static_cast<std::size_t>(record) * static_cast<std::size_t>(options_.samples_per_cycle);
+
+  double t_mid = 0.0;
+  CvodeIntegrator integrator(12, [&](double t, const double* y, double* dydt) { derivative(t, t_mid, y, dydt); },
+                             options_.integrator);
+  Spur6Result r;
+  r.static_mesh_force = p_.T1 / p_.rb1;
+  r.mesh_frequency = 1.0 / T_mesh;
+  std::vector<double> y = static_state();
+  std::vector<double> breaks = switch_times(0.0, t_end);
+  breaks.push_back(t_end);
+  double a = 0.0;
+  std::size_t next_sample = 0;
+  auto record_sample = [&](double t, const std::vector<double>& state) {
+    const MeshState m = mesh(t, t_mid, state.data());
+    r.time.push_back(t - t_record);
+    r.transmission_error.push_back(m.delta);
+    r.mesh_force.push_back(m.force);
+    r.friction_force.push_back(m.friction);
+    r.bearing_force_x1.push_back(p_.k_bearing * state[0] + p_.c_bearing * state[6]);
+  };
+  for (const double b : breaks) {
+    t_mid = 0.5 * (a + b);
+    integrator.reset(a, y);
+    // Sample times that coincide with a switch time up to rounding are taken at the switch:
+    // CVODE refuses an output time within its own rounding of the current time.
+    const double tiny = 1e-9 * dt;
+    double reached = a;
+    while (next_sample < samples) {
+      const double ts = t_record + static_cast<double>(next_sample) * dt;
+      if (ts > b + tiny) break;
+      if (ts > reached + tiny) {
+        const double target = std::min(ts, b);
+        y = integrator.advance(target, b);
+        reached = target;
+      }
+      if (ts >= a - tiny) record_sample(ts, y);
+      ++next_sample;
+    }
+    if (b > reached + tiny) y = integrator.advance(b, b);
+    r.steps += integrator.steps();
+    r.rhs_evaluations += integrator.rhs_evaluations();
+    a = b;
+  }
+
+  r.te = statistics(r.transmission_error);
+  r.force = statistics(r.mesh_force);
+  r.friction = statistics(r.friction_force);
+  r.dynamic_factor = *std::max_element(r.mesh_force.begin(), r.mesh_force.end()) / r.static_mesh_force;
+  amplitude_spectrum(r.transmission_error, dt, r.spectrum_frequency, r.spectrum_te);
+  r.natural_frequencies = natural_frequencies();
+  const std::size_t period = static_cast<std::size_t>(period_cycles * options_.samples_per_cycle);
+  double drift = 0.0;
+  for (std::size_t i = r.transmission_error.size() - period; i < r.transmission_error.size(); ++i)
+    drift = std::max(drift, std::abs(r.transmission_error[i] - r.transmission_error[i - period]));
+  r.periodicity = drift / std::max(r.te.peak_to_peak, 1e-300);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace gearbench::dynamics

@@ -1,0 +1,96 @@
+#pragma once
+// 6-DOF dynamics of a spur pair on bearings (production solver #4, first model): the
+// equations of docs/dynamics-model.md (seed 003 eqs 12–15) with the energy-method
+// single-pair stiffness, healthy or with a cracked pinion tooth, integrated by SUNDIALS
+// CVODE with a stop and restart at every stiffness switch.
+//
+// Pipeline: parameters from the case → single-pair stiffness curves (spline) → static
+// state → run-up over whole revolutions/mesh cycles → recorded window at a fixed sample
+// rate → statistics, spectrum (FFTW), natural frequencies of the mean-stiffness system.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cvode_integrator.h"
+#include "geometry/gear_pair_geometry.h"
+#include "model/materials.h"
+#include "stiffness/cubic_spline.h"
+#include "stiffness/pair_stiffness.h"
+
+namespace gearbench::dynamics {
+
+struct Spur6Options {
+  double bearing_stiffness = 1e8;    ///< k1 = k2 [N/m], x and y (gearbench default)
+  double bearing_damping = 1e3;      ///< c1 = c2 [N·s/m]
+  double mesh_damping_ratio = 0.07;  ///< ζ_m
+  double friction_coefficient = 0.06;  ///< μ (seed 003)
+  std::optional<stiffness::GearCrack> crack;
+  int runup_cycles = 60;             ///< mesh cycles before recording (whole revolutions with a crack)
+  int record_cycles = 40;            ///< mesh cycles recorded (one revolution at least with a crack)
+  int samples_per_cycle = 64;
+  CvodeOptions integrator;
+
+  void validate() const;             ///< InputError naming the key
+};
+
+/// The model's parameters, derived from the gear pair (exposed for the references).
+struct Spur6Parameters {
+  double m1 = 0, m2 = 0, I1 = 0, I2 = 0, rb1 = 0, rb2 = 0;
+  double k_bearing = 0, c_bearing = 0, T1 = 0, mu = 0, zeta_mesh = 0;
+  double mean_mesh_stiffness = 0, mesh_damping = 0;
+  double A = 0, C = 0, E = 0, T1T2 = 0, pbt = 0, contact_speed = 0;
+  int z1 = 0;
+};
+
+struct Spur6Result {
+  std::vector<double> time;                  ///< [s] from the start of recording
+  std::vector<double> transmission_error;    ///< δ [m]
+  std::vector<double> mesh_force;            ///< F_m [N]
+  std::vector<double> friction_force;        ///< F_f [N]
+  std::vector<double> bearing_force_x1;      ///< pinion bearing, along the line of action [N]
+  double static_mesh_force = 0.0;            ///< F0 = T1/R_b1 [N]
+  double dynamic_factor = 0.0;               ///< max F_m / F0
+  struct Stats { double mean = 0, rms = 0, peak_to_peak = 0; };
+  Stats te, force, friction;
+  std::vector<double> spectrum_frequency;    ///< [Hz]
+  std::vector<double> spectrum_te;           ///< amplitude of δ [m]
+  std::vector<double> natural_frequencies;   ///< [Hz], mean-stiffness system, non-zero
+  double mesh_frequency = 0.0;               ///< [Hz]
+  double periodicity = 0.0;                  ///< max |δ(t) − δ(t − period)| / p2p over the last period
+  long steps = 0, rhs_evaluations = 0;
+  double seconds = 0.0;
+};
+
+class Spur6Dynamics {
+ public:
+  Spur6Dynamics(const geometry::GearPairGeometry& geometry, const std::array<model::Material, 2>& materials,
+                const model::OperatingPoint& operating, Spur6Options options);
+
+  [[nodiscard]] Spur6Result solve() const;
+  [[nodiscard]] const Spur6Parameters& parameters() const { return p_; }
+  /// Single-pair stiffness k_pair(s) [N/m] of a healthy pair / of the cracked tooth's pair.
+  [[nodiscard]] double pair_stiffness(double s, bool cracked_tooth = false) const;
+  /// dy/dt of the page's equations for the pair set of the interval holding t_mid.
+  void derivative(double t, double t_mid, const double* y, double* dydt) const;
+  /// The static state of docs/dynamics-model.md.
+  [[nodiscard]] std::vector<double> static_state() const;
+  /// Natural frequencies [Hz] of the linear system on the mean mesh stiffness without
+  /// friction (Eigen's generalized self-adjoint eigensolver), the rigid-body mode left out.
+  [[nodiscard]] std::vector<double> natural_frequencies() const;
+
+ private:
+  struct MeshState {
+    double force = 0.0, friction = 0.0, moment1 = 0.0, moment2 = 0.0, delta = 0.0;
+  };
+  [[nodiscard]] MeshState mesh(double t, double t_mid, const double* y) const;
+  [[nodiscard]] std::vector<double> switch_times(double t0, double t1) const;
+
+  const geometry::GearPairGeometry& geometry_;
+  Spur6Options options_;
+  Spur6Parameters p_;
+  stiffness::PairStiffness pair_;
+  std::optional<stiffness::CubicSpline> healthy_, cracked_;
+};
+
+}  // namespace gearbench::dynamics
