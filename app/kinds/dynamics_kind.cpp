@@ -48,8 +48,8 @@ dynamics::Spur6Options read_options(model::ObjectReader& root) {
   o.samples_per_cycle = root.optional_integer("samples_per_cycle", 8, 4096).value_or(o.samples_per_cycle);
   if (root.has("integrator")) {
     auto i = root.object("integrator");
-    o.integrator.method = i.optional_string("method", {"bdf", "adams"}).value_or("bdf") == "adams"
-                              ? dynamics::CvodeMethod::adams : dynamics::CvodeMethod::bdf;
+    o.integrator.method = i.optional_string("method", {"adams", "bdf"}).value_or("adams") == "bdf"
+                              ? dynamics::CvodeMethod::bdf : dynamics::CvodeMethod::adams;
     o.integrator.relative_tolerance = i.optional_number("rtol", {1e-14, 1e-2}).value_or(o.integrator.relative_tolerance);
     o.integrator.absolute_tolerance = i.optional_number("atol", {1e-20, 1e-2}).value_or(o.integrator.absolute_tolerance);
     i.finish();

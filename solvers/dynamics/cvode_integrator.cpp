@@ -89,7 +89,12 @@ void CvodeIntegrator::reset(double t0, const std::vector<double>& y0) {
   if (y0.size() != y_.size()) throw std::invalid_argument("CvodeIntegrator::reset: wrong state size");
   y_ = y0;
   std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(handles_->y));
+  // A restart at a discontinuity keeps the step size reached before it, instead of CVODE's
+  // cautious first step: the solution is as smooth on both sides.
+  realtype last_step = 0.0;
+  if (initialised_) check_flag(CVodeGetLastStep(handles_->cvode, &last_step), "CVodeGetLastStep");
   check_flag(CVodeReInit(handles_->cvode, t0, handles_->y), "CVodeReInit");
+  if (last_step > 0.0) check_flag(CVodeSetInitStep(handles_->cvode, last_step), "CVodeSetInitStep");
   initialised_ = true;
 }
 

@@ -10,7 +10,7 @@ namespace gearbench::dynamics {
 enum class CvodeMethod { bdf, adams };
 
 struct CvodeOptions {
-  CvodeMethod method = CvodeMethod::bdf;
+  CvodeMethod method = CvodeMethod::adams;  ///< non-stiff oscillator: Adams takes fewer steps
   double relative_tolerance = 1e-8;
   double absolute_tolerance = 1e-12;
   long max_steps = 100000;        ///< between two output times

@@ -72,6 +72,7 @@ Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
   p_.pbt = geometry_.base_pitch_transverse();
   p_.contact_speed = operating.pinion_speed * p_.rb1;
   p_.z1 = pair.teeth[0];
+  p_.crack_mouth = p_.rb1 * std::tan(geometry_.transverse_pressure_angle());
   if (geometry_.contact_ratio_transverse() >= 2.0)
     throw InputError("gear_pair: the spur6 model handles 1 <= contact ratio < 2 (one or two pairs)");
 
@@ -92,9 +93,13 @@ Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
   p_.mesh_damping = 2.0 * p_.zeta_mesh * std::sqrt(p_.mean_mesh_stiffness * me);
 }
 
-double Spur6Dynamics::pair_stiffness(double s, bool cracked_tooth) const {
-  if (cracked_tooth) return geometry_.pair().face_width * pair_.stiffness_per_width(s, false);
-  return (*healthy_)(std::clamp(s, p_.A, p_.E));
+double Spur6Dynamics::pair_stiffness(double s, bool cracked_tooth, bool crack_acting) const {
+  using Mode = stiffness::ToothCompliance::CrackMode;
+  // A pair's interval starts or ends at A or E: its position there is A or E up to rounding.
+  const double on_path = std::clamp(s, p_.A, p_.E);
+  if (cracked_tooth)
+    return geometry_.pair().face_width * pair_.stiffness_per_width(on_path, crack_acting ? Mode::active : Mode::inactive);
+  return (*healthy_)(on_path);
 }
 
 // Pairs of the interval holding t_mid (docs/dynamics-model.md, "Mesh"): n whole base pitches
@@ -112,9 +117,12 @@ Spur6Dynamics::MeshState Spur6Dynamics::mesh(double t, double t_mid, const doubl
     const double s = p_.A + u * t - n * p_.pbt + j * p_.pbt;
     const long tooth = static_cast<long>(n) - j;
     const bool cracked = options_.crack && options_.crack->crack.length > 0.0 && ((tooth % p_.z1) + p_.z1) % p_.z1 == 0;
-    const double k = pair_stiffness(s, cracked);
+    // A pitch crack acts once the contact is above its mouth; a root crack always.
+    const bool acting = cracked && (options_.crack->crack.type == stiffness::Crack::Type::root || s_mid > p_.crack_mouth);
+    const double k = pair_stiffness(s, cracked, acting);
     const double force = k * delta + p_.mesh_damping * k / p_.mean_mesh_stiffness * delta_rate;
-    const double lambda = s < p_.C ? 1.0 : (s > p_.C ? -1.0 : 0.0);
+    // The sliding direction of the whole interval (intervals end where a pair passes C).
+    const double lambda = s_mid < p_.C ? 1.0 : (s_mid > p_.C ? -1.0 : 0.0);
     m.force += force;
     m.friction += p_.mu * lambda * force;
     m.moment1 += p_.mu * lambda * force * s;
@@ -146,15 +154,24 @@ std::vector<double> Spur6Dynamics::static_state() const {
   return y;
 }
 
-// Entry of a pair at u·t ≡ 0 and exit of the leading pair at u·t ≡ E − A − p_bt (mod p_bt).
+// Where the right-hand side jumps, once per mesh period each: a pair enters (u·t ≡ 0), the
+// leading pair leaves (u·t ≡ E − A − p_bt), a pair passes the pitch point, reversing its
+// friction (u·t ≡ C − A, mod p_bt), and, with a pitch crack, passes the crack's mouth.
 std::vector<double> Spur6Dynamics::switch_times(double t0, double t1) const {
   const double period = p_.pbt / p_.contact_speed;
   const double exit_offset = (p_.E - p_.A - p_.pbt) / p_.contact_speed;
+  const double pitch_offset = std::fmod(p_.C - p_.A, p_.pbt) / p_.contact_speed;
+  const double mouth_offset = std::fmod(p_.crack_mouth - p_.A, p_.pbt) / p_.contact_speed;
+  const bool mouth = options_.crack && options_.crack->crack.type == stiffness::Crack::Type::pitch;
   std::vector<double> times;
   for (double base = std::floor(t0 / period) * period; base < t1 + period; base += period)
-    for (const double t : {base, base + exit_offset})
+    for (const double t : {base, base + exit_offset, base + pitch_offset, base + (mouth ? mouth_offset : 0.0)})
       if (t > t0 && t < t1) times.push_back(t);
   std::sort(times.begin(), times.end());
+  // Coinciding events (the mouth is the pitch point of an unshifted pinion) give one restart.
+  times.erase(std::unique(times.begin(), times.end(),
+                          [period](double a, double b) { return std::abs(a - b) < 1e-12 * period; }),
+              times.end());
   return times;
 }
 

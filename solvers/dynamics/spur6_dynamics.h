@@ -40,6 +40,7 @@ struct Spur6Parameters {
   double k_bearing = 0, c_bearing = 0, T1 = 0, mu = 0, zeta_mesh = 0;
   double mean_mesh_stiffness = 0, mesh_damping = 0;
   double A = 0, C = 0, E = 0, T1T2 = 0, pbt = 0, contact_speed = 0;
+  double crack_mouth = 0;  ///< s where a pitch crack starts to act (the pinion's reference point)
   int z1 = 0;
 };
 
@@ -69,8 +70,9 @@ class Spur6Dynamics {
 
   [[nodiscard]] Spur6Result solve() const;
   [[nodiscard]] const Spur6Parameters& parameters() const { return p_; }
-  /// Single-pair stiffness k_pair(s) [N/m] of a healthy pair / of the cracked tooth's pair.
-  [[nodiscard]] double pair_stiffness(double s, bool cracked_tooth = false) const;
+  /// Single-pair stiffness k_pair(s) [N/m] of a healthy pair, or of the cracked tooth's
+  /// pair with its crack acting or not (decided for a whole interval by its midpoint).
+  [[nodiscard]] double pair_stiffness(double s, bool cracked_tooth = false, bool crack_acting = false) const;
   /// dy/dt of the page's equations for the pair set of the interval holding t_mid.
   void derivative(double t, double t_mid, const double* y, double* dydt) const;
   /// The static state of docs/dynamics-model.md.

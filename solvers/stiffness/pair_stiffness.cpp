@@ -36,12 +36,16 @@ double PairStiffness::roll_angle(int gear, double s) const {
 }
 
 PairCompliance PairStiffness::compliance(double s, bool healthy) const {
+  return compliance(s, healthy ? ToothCompliance::CrackMode::healthy : ToothCompliance::CrackMode::automatic);
+}
+
+PairCompliance PairStiffness::compliance(double s, ToothCompliance::CrackMode mode) const {
   PairCompliance c;
   c.hertz = 1.0 / hertz_per_width_;
   for (int gear = 0; gear < 2; ++gear) {
     const auto i = static_cast<std::size_t>(gear);
     const double psi = roll_angle(gear, s);
-    c.tooth[i] = teeth_[i].at(psi, healthy);
+    c.tooth[i] = teeth_[i].at(psi, mode);
     if (with_foundation_)
       c.foundation[i] = foundation_compliance(foundation_[i], teeth_[i].profile().involute_point(psi));
   }
@@ -49,9 +53,13 @@ PairCompliance PairStiffness::compliance(double s, bool healthy) const {
 }
 
 double PairStiffness::stiffness_per_width(double s, bool healthy) const {
+  return stiffness_per_width(s, healthy ? ToothCompliance::CrackMode::healthy : ToothCompliance::CrackMode::automatic);
+}
+
+double PairStiffness::stiffness_per_width(double s, ToothCompliance::CrackMode mode) const {
   const auto& p = geometry_.path();
   if (s < p.A || s > p.E) return 0.0;
-  return 1.0 / compliance(s, healthy).total();
+  return 1.0 / compliance(s, mode).total();
 }
 
 double StiffnessLoadSharing::share(const geometry::GearPairGeometry& g, double s) const {

@@ -37,8 +37,11 @@ class PairStiffness {
   /// Compliances per unit width with the pair in contact at s (m from T1); `healthy`
   /// evaluates a pair of uncracked teeth even when one gear carries a crack.
   [[nodiscard]] PairCompliance compliance(double s, bool healthy = false) const;
+  /// The same with the crack's state imposed on the cracked tooth.
+  [[nodiscard]] PairCompliance compliance(double s, ToothCompliance::CrackMode mode) const;
   /// Pair stiffness per unit face width [N/m²] at s; 0 outside A..E.
   [[nodiscard]] double stiffness_per_width(double s, bool healthy = false) const;
+  [[nodiscard]] double stiffness_per_width(double s, ToothCompliance::CrackMode mode) const;
   [[nodiscard]] bool cracked() const { return cracked_; }
 
   [[nodiscard]] const geometry::GearPairGeometry& geometry() const { return geometry_; }

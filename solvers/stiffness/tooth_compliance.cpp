@@ -135,9 +135,10 @@ bool ToothCompliance::crack_active(double roll_angle) const {
   return crack_->type == Crack::Type::root || roll_angle > profile_.reference_roll_angle();
 }
 
-ComplianceComponents ToothCompliance::at(double roll_angle, bool healthy) const {
+ComplianceComponents ToothCompliance::at(double roll_angle, CrackMode mode) const {
   const FlankPoint load = profile_.involute_point(roll_angle);
-  const bool cracked = !healthy && crack_active(roll_angle);
+  const bool cracked = crack_ && (mode == CrackMode::active ||
+                                  (mode == CrackMode::automatic && crack_active(roll_angle)));
   const Moments m = moments_to(cracked ? cracked_ : healthy_, load.x, cracked);
   const double c = std::cos(load.alpha);
   const double s = std::sin(load.alpha);

@@ -37,9 +37,12 @@ class ToothCompliance {
   ToothCompliance(ToothProfile profile, const model::Material& material, double face_width,
                   const std::optional<Crack>& crack);
 
-  /// Compliances for a load at roll angle ψ on this tooth's flank; `healthy` ignores the
-  /// crack (the uncracked teeth of the same gear).
-  [[nodiscard]] ComplianceComponents at(double roll_angle, bool healthy = false) const;
+  /// Compliances for a load at roll angle ψ on this tooth's flank, with the crack acting
+  /// as its position decides (automatic), never (the uncracked teeth of the same gear), or
+  /// as the caller decides for a whole time interval (a dynamics step that must not see the
+  /// crack switch on inside it).
+  enum class CrackMode { automatic, healthy, active, inactive };
+  [[nodiscard]] ComplianceComponents at(double roll_angle, CrackMode mode = CrackMode::automatic) const;
 
   [[nodiscard]] const ToothProfile& profile() const { return profile_; }
   /// Crack tip half-thickness h_c (negative past the centre line), if cracked.

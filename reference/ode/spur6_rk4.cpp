@@ -1,0 +1,266 @@
+#include "ode/spur6_rk4.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+namespace gearbench::reference {
+
+namespace {
+
+// Where each coordinate sits in a Spur6State: q_i at i, its rate q̇_i at i + rate.
+enum Coordinate : std::size_t { X1 = 0, Y1 = 1, TH1 = 2, X2 = 3, Y2 = 4, TH2 = 5 };
+constexpr std::size_t rate = 6;
+
+// Breakpoints closer than this fraction of dt are merged, and an interval is cut into
+// ceil(length/dt − this) steps: round-off must neither create slivers nor add a step.
+constexpr double relative_slack = 1e-9;
+
+// ---- Input checks ---------------------------------------------------------------------
+
+void require_positive(double value, const char* name) {
+  if (!(value > 0.0))
+    throw std::invalid_argument(std::string("spur6: ") + name + " must be positive, got " +
+                                std::to_string(value));
+}
+
+// The parameters every function needs: what the equations divide by, and a path of
+// contact that contact positions can be computed on.
+void validate(const Spur6Parameters& p) {
+  require_positive(p.m1, "m1");
+  require_positive(p.m2, "m2");
+  require_positive(p.I1, "I1");
+  require_positive(p.I2, "I2");
+  require_positive(p.rb1, "rb1");
+  require_positive(p.rb2, "rb2");
+  require_positive(p.mean_mesh_stiffness, "mean_mesh_stiffness");
+  require_positive(p.pbt, "pbt");
+  require_positive(p.contact_speed, "contact_speed");
+  require_positive(p.E - p.A, "E - A");
+  if (!p.pair_stiffness) throw std::invalid_argument("spur6: pair_stiffness is empty");
+}
+
+// ---- Section "Mesh": the pairs in contact ---------------------------------------------
+
+// mod(x, period) in [0, period).
+double wrap(double x, double period) {
+  const double r = std::fmod(x, period);
+  return r < 0.0 ? r + period : r;
+}
+
+// One pair in contact: its index j and its friction sign λ_j (section "Friction").
+struct Pair {
+  int j;
+  double lambda;
+};
+
+// A set of pairs in contact together with their positions as functions of time,
+// s_j(t) = A + phase + u·(t − t_ref) + j·p_bt with phase = mod(u·t_ref, p_bt). At t = t_ref
+// this is the page's s_j; on an interval without switches it is the same pair moving on.
+struct ContactSet {
+  double t_ref;
+  double phase;
+  std::vector<Pair> pairs;
+};
+
+// The page's pairs at time t: every j ≥ 0 with s_j ≤ E, and λ_j = +1 before the pitch
+// point C, −1 after it, 0 on it.
+ContactSet contact_set_at(const Spur6Parameters& p, double t) {
+  ContactSet set{t, wrap(p.contact_speed * t, p.pbt), {}};
+  for (int j = 0; p.A + set.phase + j * p.pbt <= p.E; ++j) {
+    const double s = p.A + set.phase + j * p.pbt;
+    set.pairs.push_back({j, s < p.C ? 1.0 : (s > p.C ? -1.0 : 0.0)});
+  }
+  return set;
+}
+
+// s_j(t) of a pair of the set; clamped to [A, E], which it can leave only by round-off at
+// the ends of an interval.
+double position(const Spur6Parameters& p, const ContactSet& set, const Pair& pair, double t) {
+  const double s = p.A + set.phase + p.contact_speed * (t - set.t_ref) + pair.j * p.pbt;
+  return std::clamp(s, p.A, p.E);
+}
+
+// c_m = 2·ζ_m·√(k̄·m_e) with m_e = I1·I2/(I1·R_b2² + I2·R_b1²).
+double mesh_damping(const Spur6Parameters& p) {
+  const double me = p.I1 * p.I2 / (p.I1 * p.rb2 * p.rb2 + p.I2 * p.rb1 * p.rb1);
+  return 2.0 * p.zeta_mesh * std::sqrt(p.mean_mesh_stiffness * me);
+}
+
+// δ = x1 + R_b1·θ1 − x2 − R_b2·θ2, from the coordinates starting at `first` (0 for δ,
+// `rate` for δ̇).
+double transmission_error(const Spur6Parameters& p, const Spur6State& y, std::size_t first) {
+  return y[first + X1] + p.rb1 * y[first + TH1] - y[first + X2] - p.rb2 * y[first + TH2];
+}
+
+// The mesh's loads: F_m = Σ F_j (seed eq. 13) and, from section "Friction", the friction
+// force F_f on the wheel and the friction moments M1 on the pinion and M2 on the wheel.
+struct MeshLoads {
+  double mesh = 0.0;
+  double friction = 0.0;
+  double moment1 = 0.0;
+  double moment2 = 0.0;
+};
+
+MeshLoads mesh_loads(const Spur6Parameters& p, const ContactSet& set, double t,
+                     const Spur6State& y) {
+  const double delta = transmission_error(p, y, 0);
+  const double delta_rate = transmission_error(p, y, rate);
+  const double damping_per_stiffness = mesh_damping(p) / p.mean_mesh_stiffness;
+  MeshLoads loads;
+  for (const Pair& pair : set.pairs) {
+    const double s = position(p, set, pair, t);
+    const double k = p.pair_stiffness(s);
+    const double force = k * delta + damping_per_stiffness * k * delta_rate;  // F_j
+    const double friction = p.mu * pair.lambda * force;
+    loads.mesh += force;
+    loads.friction += friction;
+    loads.moment1 += friction * s;               // arm ρ1 = s_j
+    loads.moment2 += friction * (p.T1T2 - s);    // arm ρ2 = T1T2 − s_j
+  }
+  return loads;
+}
+
+// ---- Section "Equations of motion" (seed eq. 12) --------------------------------------
+
+// −c·q̇ − k·q of a bearing coordinate.
+double bearing_force(const Spur6State& y, std::size_t i, double k, double c) {
+  return -c * y[i + rate] - k * y[i];
+}
+
+Spur6State equations_of_motion(const Spur6Parameters& p, const ContactSet& set, double t,
+                               const Spur6State& y) {
+  const MeshLoads f = mesh_loads(p, set, t, y);
+  const double T2 = p.T1 * p.rb2 / p.rb1;
+  Spur6State dy{};
+  for (std::size_t i = 0; i < rate; ++i) dy[i] = y[i + rate];
+  dy[X1 + rate] = (bearing_force(y, X1, p.k1, p.c1) - f.mesh) / p.m1;
+  dy[Y1 + rate] = (bearing_force(y, Y1, p.k1, p.c1) - f.friction) / p.m1;
+  dy[TH1 + rate] = (p.T1 - p.rb1 * f.mesh - f.moment1) / p.I1;
+  dy[X2 + rate] = (bearing_force(y, X2, p.k2, p.c2) + f.mesh) / p.m2;
+  dy[Y2 + rate] = (bearing_force(y, Y2, p.k2, p.c2) + f.friction) / p.m2;
+  dy[TH2 + rate] = (p.rb2 * f.mesh + f.moment2 - T2) / p.I2;
+  return dy;
+}
+
+// ---- Classical Runge–Kutta of order 4 -------------------------------------------------
+
+// y + h·dy.
+Spur6State advanced(const Spur6State& y, double h, const Spur6State& dy) {
+  Spur6State result;
+  for (std::size_t i = 0; i < y.size(); ++i) result[i] = y[i] + h * dy[i];
+  return result;
+}
+
+void rk4_step(const Spur6Parameters& p, const ContactSet& set, double t, double h,
+              Spur6State& y) {
+  const Spur6State d1 = equations_of_motion(p, set, t, y);
+  const Spur6State d2 = equations_of_motion(p, set, t + h / 2, advanced(y, h / 2, d1));
+  const Spur6State d3 = equations_of_motion(p, set, t + h / 2, advanced(y, h / 2, d2));
+  const Spur6State d4 = equations_of_motion(p, set, t + h, advanced(y, h, d3));
+  for (std::size_t i = 0; i < y.size(); ++i)
+    y[i] += h / 6 * (d1[i] + 2 * d2[i] + 2 * d3[i] + d4[i]);
+}
+
+// From a to b (no switch strictly inside) in equal steps of at most dt, with the pair set
+// of the midpoint: the right-hand limit of the pair set at a, the left-hand one at b.
+void integrate_interval(const Spur6Parameters& p, double a, double b, double dt,
+                        Spur6State& y) {
+  const ContactSet set = contact_set_at(p, (a + b) / 2);
+  const auto steps = static_cast<std::size_t>(
+      std::max(1.0, std::ceil((b - a) / dt - relative_slack)));
+  const double h = (b - a) / static_cast<double>(steps);
+  for (std::size_t i = 0; i < steps; ++i)
+    rk4_step(p, set, a + static_cast<double>(i) * h, h, y);
+}
+
+// ---- The times the integrator steps onto ----------------------------------------------
+
+struct Breakpoint {
+  double t;
+  bool sample;
+};
+
+// Where the right-hand side jumps, as phases mod(u·t, p_bt) of a mesh period (section
+// "Mesh"): a pair enters at A, a pair leaves at E, a pair passes the pitch point C.
+std::array<double, 3> switch_phases(const Spur6Parameters& p) {
+  return {0.0, wrap(p.E - p.A, p.pbt), wrap(p.C - p.A, p.pbt)};
+}
+
+// 0, every switch time and every k·sample_every at least the slack inside (0, t_end), and
+// t_end, sorted; points closer than the slack are merged, keeping a sample time exactly.
+std::vector<Breakpoint> breakpoints(const Spur6Parameters& p, double t_end, double dt,
+                                    double sample_every) {
+  const double slack = relative_slack * dt;
+  std::vector<Breakpoint> inner;
+  for (double n = 0; n * p.pbt / p.contact_speed < t_end; ++n)
+    for (double phase : switch_phases(p)) {
+      const double t = (n * p.pbt + phase) / p.contact_speed;
+      if (t > slack && t < t_end - slack) inner.push_back({t, false});
+    }
+  for (double k = 1; k * sample_every < t_end - slack; ++k)
+    inner.push_back({k * sample_every, true});
+  std::sort(inner.begin(), inner.end(),
+            [](const Breakpoint& l, const Breakpoint& r) { return l.t < r.t; });
+
+  std::vector<Breakpoint> points{{0.0, true}};
+  for (const Breakpoint& b : inner) {
+    if (b.t - points.back().t >= slack)
+      points.push_back(b);
+    else if (b.sample && !points.back().sample)
+      points.back() = b;
+  }
+  points.push_back({t_end, true});
+  return points;
+}
+
+Spur6Sample make_sample(const Spur6Parameters& p, double t, const Spur6State& y) {
+  const MeshLoads f = mesh_loads(p, contact_set_at(p, t), t, y);
+  return {t, y, f.mesh, f.friction, transmission_error(p, y, 0)};
+}
+
+}  // namespace
+
+// ---- Public interface -----------------------------------------------------------------
+
+Spur6State spur6_static_state(const Spur6Parameters& p) {
+  validate(p);
+  require_positive(p.k1, "k1");
+  require_positive(p.k2, "k2");
+  const double F0 = p.T1 / p.rb1;
+  const double delta0 = F0 / p.mean_mesh_stiffness;
+  Spur6State y{};
+  y[X1] = -F0 / p.k1;
+  y[X2] = F0 / p.k2;
+  y[TH1] = (delta0 - y[X1] + y[X2]) / p.rb1;
+  return y;
+}
+
+Spur6State spur6_derivative(const Spur6Parameters& p, double t, const Spur6State& y) {
+  validate(p);
+  return equations_of_motion(p, contact_set_at(p, t), t, y);
+}
+
+std::vector<Spur6Sample> spur6_rk4(const Spur6Parameters& p, const Spur6State& y0,
+                                   double t_end, double dt, double sample_every) {
+  validate(p);
+  require_positive(dt, "dt");
+  require_positive(sample_every, "sample_every");
+  if (!(t_end >= 0.0))
+    throw std::invalid_argument("spur6: t_end must be non-negative, got " +
+                                std::to_string(t_end));
+
+  Spur6State y = y0;
+  std::vector<Spur6Sample> samples{make_sample(p, 0.0, y)};
+  if (t_end == 0.0) return samples;
+  const std::vector<Breakpoint> points = breakpoints(p, t_end, dt, sample_every);
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    integrate_interval(p, points[i - 1].t, points[i].t, dt, y);
+    if (points[i].sample) samples.push_back(make_sample(p, points[i].t, y));
+  }
+  return samples;
+}
+
+}  // namespace gearbench::reference
