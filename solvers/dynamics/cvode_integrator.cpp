@@ -6,6 +6,7 @@
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include <stdexcept>
 
@@ -18,6 +19,7 @@ struct CvodeIntegrator::Handles {
   N_Vector y = nullptr;
   SUNMatrix matrix = nullptr;
   SUNLinearSolver solver = nullptr;
+  SUNNonlinearSolver fixed_point = nullptr;
   void* cvode = nullptr;
 };
 
@@ -63,9 +65,17 @@ CvodeIntegrator::CvodeIntegrator(std::size_t size, Rhs rhs, const CvodeOptions& 
                "CVodeSStolerances");
     check_flag(CVodeSetUserData(handles_->cvode, &rhs_), "CVodeSetUserData");
     check_flag(CVodeSetMaxNumSteps(handles_->cvode, options.max_steps), "CVodeSetMaxNumSteps");
-    handles_->matrix = check_pointer(SUNDenseMatrix(n, n, handles_->context), "SUNDenseMatrix");
-    handles_->solver = check_pointer(SUNLinSol_Dense(handles_->y, handles_->matrix, handles_->context), "SUNLinSol_Dense");
-    check_flag(CVodeSetLinearSolver(handles_->cvode, handles_->solver, handles_->matrix), "CVodeSetLinearSolver");
+    if (options.method == CvodeMethod::adams) {
+      // Non-stiff: Adams–Moulton with fixed-point iteration, no Jacobian and no linear solves.
+      handles_->fixed_point = check_pointer(SUNNonlinSol_FixedPoint(handles_->y, 0, handles_->context),
+                                            "SUNNonlinSol_FixedPoint");
+      check_flag(CVodeSetNonlinearSolver(handles_->cvode, handles_->fixed_point), "CVodeSetNonlinearSolver");
+    } else {
+      // Stiff: BDF with Newton iteration on a dense difference-quotient Jacobian.
+      handles_->matrix = check_pointer(SUNDenseMatrix(n, n, handles_->context), "SUNDenseMatrix");
+      handles_->solver = check_pointer(SUNLinSol_Dense(handles_->y, handles_->matrix, handles_->context), "SUNLinSol_Dense");
+      check_flag(CVodeSetLinearSolver(handles_->cvode, handles_->solver, handles_->matrix), "CVodeSetLinearSolver");
+    }
   } catch (...) {
     release();
     throw;
@@ -78,6 +88,7 @@ void CvodeIntegrator::release() {
   if (!handles_) return;
   if (handles_->cvode) CVodeFree(&handles_->cvode);
   if (handles_->solver) SUNLinSolFree(handles_->solver);
+  if (handles_->fixed_point) SUNNonlinSolFree(handles_->fixed_point);
   if (handles_->matrix) SUNMatDestroy(handles_->matrix);
   if (handles_->y) N_VDestroy(handles_->y);
   if (handles_->context) SUNContext_Free(&handles_->context);

@@ -1,5 +1,6 @@
 #pragma once
-// A small RAII wrapper of SUNDIALS 6.4 CVODE (serial N_Vector, dense direct linear solver):
+// A small RAII wrapper of SUNDIALS 6.4 CVODE (serial N_Vector; Adams with fixed-point
+// iteration, or BDF with Newton on a dense direct linear solver):
 // every SUNDIALS return code is turned into a ConvergenceError or std::runtime_error with
 // the flag's name, at once.
 #include <functional>
