@@ -70,7 +70,7 @@ ehl::EhlOptions read_grid(model::ObjectReader& root) {
   if (auto x = g.optional_number("x_out", {0.0, 1e3, true, false})) o.x_out = *x;
   if ((o.x_in == 0.0) != (o.x_out == 0.0))
     throw InputError("grid.x_in, grid.x_out: give both or neither");
-  o.cycle = g.optional_string("cycle", {"V", "W"}).value_or("V") == "W" ? ehl::CycleType::W : ehl::CycleType::V;
+  o.cycle = g.optional_string("cycle", {"V", "W"}).value_or("W") == "V" ? ehl::CycleType::V : ehl::CycleType::W;
   o.max_cycles = g.optional_integer("max_cycles", 1, 100000).value_or(o.max_cycles);
   o.tolerance = g.optional_number("tolerance", {0.0, 1.0, true, true}).value_or(o.tolerance);
   g.finish();

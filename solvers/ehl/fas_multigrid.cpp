@@ -102,7 +102,7 @@ class FasMultigrid::Impl {
   void full_multigrid() {
     initial_guess(*levels_.front());
     levels_.front()->g = state_.load;
-    solve_coarsest(*levels_.front(), 200);
+    solve_coarsest(*levels_.front(), 20);
     // Full multigrid: interpolate each converged level to the next and cycle there.
     for (std::size_t k = 1; k < levels_.size(); ++k) {
       interpolate_solution(*levels_[k - 1], *levels_[k]);
