@@ -50,6 +50,7 @@ struct EhlResult {
   double friction_coefficient = 0.0;
   // Diagnostics.
   bool converged = false;
+  std::string cycle_type;                  ///< "W", "V" or "V (after W failed)"
   int cycles = 0;
   double work_units = 0.0;                 ///< finest-grid relaxation sweeps equivalent
   std::vector<double> residual_history;    ///< scaled Reynolds residual per cycle
@@ -68,7 +69,8 @@ class LineContactSolver {
  public:
   LineContactSolver(const LineContactProblem& problem, EhlOptions options);
   /// Solves by full multigrid; throws ConvergenceError (with the residual history) when the
-  /// tolerance is not met within max_cycles.
+  /// tolerance is not met within max_cycles. With W-cycles, a failed solve is repeated with
+  /// V-cycles before it counts as failed.
   [[nodiscard]] EhlResult solve() const;
   /// The same, returning an unconverged result (converged = false) instead of throwing, so
   /// that a caller can write the diagnostics before it reports the failure.
