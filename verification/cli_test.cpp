@@ -269,6 +269,27 @@ TEST(Cli, DynamicsRunsAndValidates) {
   }
 }
 
+/// The result without wall-clock timings, which are the only figures allowed to differ.
+json without_timings(json j) {
+  if (j.is_object()) {
+    for (const char* key : {"seconds", "seconds_per_level"}) j.erase(key);
+    for (auto& item : j.items()) item.value() = without_timings(item.value());
+  }
+  return j;
+}
+
+// The same case gives bit-identical figures twice (no uninitialised state, no ordering of
+// threads or hash maps leaking into results); only the timings differ.
+TEST(Cli, SameCaseSameFigures) {
+  for (const char* file : {"seed004_spur_geometry.json", "seed003_spur_stiffness.json", "ehl_moes_M20_L10.json"}) {
+    const std::string command = std::string("run ") + GEARBENCH_SOURCE_DIR + "/cases/" + file;
+    const auto first = run_gearbench(command);
+    const auto second = run_gearbench(command);
+    ASSERT_EQ(first.exit_code, 0) << first.err;
+    EXPECT_EQ(without_timings(json::parse(first.out)).dump(), without_timings(json::parse(second.out)).dump()) << file;
+  }
+}
+
 TEST(Cli, MalformedJsonGivesLine) {
   const auto o = run_gearbench("run " + write_case("malformed", "{\n  \"kind\": \"geometry\",\n  \"gear_pair\": {,\n}\n"));
   EXPECT_EQ(o.exit_code, 2);
