@@ -23,28 +23,30 @@ std::vector<double> semi_ellipse(std::size_t n, double h) {
   return P;
 }
 
+/// The Hertz pressure on n nodes over [−2, 2] and its deformation operator.
+struct DeformationSetup {
+  explicit DeformationSetup(std::size_t n)
+      : h(4.0 / static_cast<double>(n - 1)), deformation(n, h), pressure(semi_ellipse(n, h)) {}
+  double h;
+  Deformation deformation;
+  std::vector<double> pressure;
+};
+
 void BM_EhlDeformation(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  const double h = 4.0 / static_cast<double>(n - 1);
-  const Deformation d(n, h);
-  const auto P = semi_ellipse(n, h);
+  const DeformationSetup s(static_cast<std::size_t>(state.range(0)));
   std::vector<double> W;
   for (auto _ : state) {
-    d.apply(P, W);
+    s.deformation.apply(s.pressure, W);
     benchmark::DoNotOptimize(W.data());
   }
-  state.SetComplexityN(state.range(0));
 }
 BENCHMARK(BM_EhlDeformation)->Arg(1025)->Arg(4097)->Arg(16385);
 
 void BM_EhlDeformation_baseline(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  const double h = 4.0 / static_cast<double>(n - 1);
-  const Deformation d(n, h);
-  const auto P = semi_ellipse(n, h);
+  const DeformationSetup s(static_cast<std::size_t>(state.range(0)));
   std::vector<double> W;
   for (auto _ : state) {
-    d.apply_direct(P, W);
+    s.deformation.apply_direct(s.pressure, W);
     benchmark::DoNotOptimize(W.data());
   }
 }

@@ -1,9 +1,9 @@
 // Case kind "dynamics": 6-DOF spur-pair dynamics on SUNDIALS CVODE (model "spur6").
 #include <cmath>
 #include <fmt/format.h>
-#include <numbers>
 
 #include "dynamics/spur6_dynamics.h"
+#include "crack_section.h"
 #include "kind_registry.h"
 #include "model/case_reader.h"
 #include "model/errors.h"
@@ -13,19 +13,6 @@ namespace {
 
 using nlohmann::json;
 using model::Range;
-
-std::optional<stiffness::GearCrack> read_crack(model::ObjectReader& root) {
-  if (!root.has("crack")) return std::nullopt;
-  auto c = root.object("crack");
-  stiffness::GearCrack crack;
-  crack.crack.type = c.string("type", {"pitch", "root"}) == "pitch" ? stiffness::Crack::Type::pitch
-                                                                     : stiffness::Crack::Type::root;
-  crack.crack.length = c.number("length_mm", Range::closed(0.0, 1e4), "mm") * 1e-3;
-  crack.crack.angle = c.number("angle_deg", {0.0, 90.0, true, true}, "deg") * std::numbers::pi / 180.0;
-  crack.gear = c.optional_integer("gear", 1, 1).value_or(1) - 1;  // the model tracks pinion teeth
-  c.finish();
-  return crack;
-}
 
 dynamics::Spur6Options read_options(model::ObjectReader& root) {
   dynamics::Spur6Options o;
@@ -42,7 +29,7 @@ dynamics::Spur6Options read_options(model::ObjectReader& root) {
     o.friction_coefficient = f.number("mu", Range::closed(0.0, 0.5));
     f.finish();
   }
-  o.crack = read_crack(root);
+  o.crack = read_crack(root, 1);
   o.runup_cycles = root.optional_integer("runup_cycles", 0, 1000000).value_or(o.runup_cycles);
   o.record_cycles = root.optional_integer("record_cycles", 2, 1000000).value_or(o.record_cycles);
   o.samples_per_cycle = root.optional_integer("samples_per_cycle", 8, 4096).value_or(o.samples_per_cycle);

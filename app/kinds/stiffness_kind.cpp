@@ -1,9 +1,9 @@
 // Case kind "stiffness": energy-method mesh stiffness over one mesh cycle, healthy or
 // cracked, with the ISO 6336-1 method B figures beside it for comparison.
 #include <cmath>
-#include <numbers>
 
 #include "closed_form/iso6336_stiffness.h"
+#include "crack_section.h"
 #include "kind_registry.h"
 #include "model/case_reader.h"
 #include "model/errors.h"
@@ -20,19 +20,6 @@ stiffness::BeamStart read_beam_start(model::ObjectReader& root) {
   if (name == "straight") return stiffness::BeamStart::straight;
   if (name == "base_circle") return stiffness::BeamStart::base_circle;
   return stiffness::BeamStart::improved;
-}
-
-std::optional<stiffness::GearCrack> read_crack(model::ObjectReader& root) {
-  if (!root.has("crack")) return std::nullopt;
-  auto c = root.object("crack");
-  stiffness::GearCrack crack;
-  crack.crack.type = c.string("type", {"pitch", "root"}) == "pitch" ? stiffness::Crack::Type::pitch
-                                                                     : stiffness::Crack::Type::root;
-  crack.crack.length = c.number("length_mm", model::Range::closed(0.0, 1e4), "mm") * 1e-3;
-  crack.crack.angle = c.number("angle_deg", {0.0, 90.0, true, true}, "deg") * std::numbers::pi / 180.0;
-  crack.gear = c.optional_integer("gear", 1, 2).value_or(1) - 1;
-  c.finish();
-  return crack;
 }
 
 json vector_json(const std::vector<double>& v, double scale = 1.0) {
@@ -59,7 +46,7 @@ json run_stiffness(const json& case_json) {
   }
   if (auto bore = root.optional_number_pair("bore_diameter_mm", model::Range::positive(1e7), "mm"))
     options.bore_radius = std::array<double, 2>{0.5e-3 * (*bore)[0], 0.5e-3 * (*bore)[1]};
-  options.crack = read_crack(root);
+  options.crack = read_crack(root, 2);
   root.finish();
 
   const geometry::GearPairGeometry geometry(gear_case.gear_pair);
