@@ -290,6 +290,22 @@ TEST(Cli, SameCaseSameFigures) {
   }
 }
 
+TEST(Cli, EfficiencyRunsAndValidates) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed004_spur_efficiency.json");
+  const auto j = json::parse(in);
+  const auto o = run_gearbench("run " + write_case("efficiency", j.dump()));
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  EXPECT_NEAR(r["loss_factor_numeric"].get<double>(), r["ohlendorf_HV"].get<double>(), 1e-12);
+  EXPECT_LT(r["efficiency_mean"].get<double>(), 1.0);
+  EXPECT_GT(r["efficiency_min"].get<double>(), 0.9);
+  auto bad = j;
+  bad["friction"]["model"] = "xu_kahraman";
+  const auto e = run_gearbench("run " + write_case("efficiency_bad", bad.dump()));
+  EXPECT_EQ(e.exit_code, 2);
+  EXPECT_NE(e.err.find("friction.model = \"xu_kahraman\": allowed values are constant"), std::string::npos) << e.err;
+}
+
 TEST(Cli, MalformedJsonGivesLine) {
   const auto o = run_gearbench("run " + write_case("malformed", "{\n  \"kind\": \"geometry\",\n  \"gear_pair\": {,\n}\n"));
   EXPECT_EQ(o.exit_code, 2);
