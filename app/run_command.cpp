@@ -22,6 +22,8 @@ void write_output(const std::string& text, const std::string& output_path) {
   std::ofstream out(output_path);
   if (!out) throw InputError(fmt::format("-o {}: cannot write the output file", output_path));
   out << text;
+  out.flush();
+  if (!out) throw std::runtime_error(fmt::format("-o {}: writing the output failed", output_path));
 }
 }  // namespace
 

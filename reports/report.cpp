@@ -256,6 +256,15 @@ std::string to_markdown(const Report& report, const json& meta) {
   return md;
 }
 
+namespace {
+void write_file(const fs::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  out.flush();
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+}  // namespace
+
 std::string write_report(const Report& report, const std::string& parent) {
   fs::create_directories(parent);
   const std::string name = report_folder_name();
@@ -266,11 +275,16 @@ std::string write_report(const Report& report, const std::string& parent) {
   const fs::path temp = fs::path(parent) / fmt::format(".tmp-{}-{}", name, ::getpid());
   fs::remove_all(temp);
   fs::create_directories(temp / "figures");
-  const json j = to_json(report);
-  std::ofstream(temp / "report.json") << j.dump(2) << "\n";
-  std::ofstream(temp / "report.md") << to_markdown(report, j);
-  for (const auto& f : report.figures) render_svg(f, (temp / "figures" / (f.id + ".svg")).string());
-  fs::rename(temp, target);
+  try {
+    const json j = to_json(report);
+    write_file(temp / "report.json", j.dump(2) + "\n");
+    write_file(temp / "report.md", to_markdown(report, j));
+    for (const auto& f : report.figures) render_svg(f, (temp / "figures" / (f.id + ".svg")).string());
+    fs::rename(temp, target);
+  } catch (...) {
+    fs::remove_all(temp);  // never leave a half-written report behind
+    throw;
+  }
   return target.string();
 }
 

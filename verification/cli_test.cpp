@@ -231,6 +231,12 @@ TEST(Cli, EhlLineBadInput) {
        "the entrainment speed must be positive"},
       {R"({"kind": "ehl_line", "moes": {"M": 20, "L": 10}, "grid": {"nodes": 1000}})",
        "grid.nodes = 1000: use (n0 − 1)·2^k + 1 nodes"},
+      {R"({"kind": "ehl_line", "moes": {"M": 20, "L": 10}, "grid": {"nodes": 641, "levels": 5}})",
+       "grid.nodes: give either nodes or levels with coarsest_nodes, not both"},
+      {R"({"kind": "ehl_line", "contact": {"reduced_radius_m": 0.01, "load_per_length_N_per_m": 1e5,
+          "surface_speeds_m_per_s": [1, 1], "reduced_modulus_Pa": 2.2e11},
+          "lubricant": {"viscosity_Pa_s": 6e-5, "pressure_viscosity_1_per_GPa": 20}})",
+       "lubricant.viscosity_Pa_s = 6e-05: allowed is > 6.31e-05 Pa*s"},
   };
   int n = 0;
   for (const auto& [text, expected] : cases) {
@@ -256,7 +262,7 @@ TEST(Cli, DynamicsRunsAndValidates) {
       {[](json& c) { c["model"] = "herringbone12"; }, "model = \"herringbone12\": allowed values are spur6"},
       {[](json& c) { c["friction"]["mu"] = 0.9; }, "friction.mu = 0.9: allowed range is [0, 0.5]"},
       {[](json& c) { c.erase("operating"); }, "operating: missing required key"},
-      {[](json& c) { c["gear_pair"]["helix_angle_deg"] = 10; }, "helix_angle_deg must be 0"},
+      {[](json& c) { c["gear_pair"]["helix_angle_deg"] = 10; }, "gear_pair.helix_angle_deg = 10: model \"spur6\" needs 0"},
       {[](json& c) { c["samples_per_cycle"] = 4; }, "samples_per_cycle = 4: allowed range is [8, 4096]"},
   };
   int n = 0;
@@ -304,6 +310,12 @@ TEST(Cli, EfficiencyRunsAndValidates) {
   const auto e = run_gearbench("run " + write_case("efficiency_bad", bad.dump()));
   EXPECT_EQ(e.exit_code, 2);
   EXPECT_NE(e.err.find("friction.model = \"xu_kahraman\": allowed values are constant"), std::string::npos) << e.err;
+  auto helical = j;
+  helical["gear_pair"]["helix_angle_deg"] = 15;
+  helical["load_sharing"] = "iso";
+  const auto h = run_gearbench("run " + write_case("efficiency_helical_iso", helical.dump()));
+  EXPECT_EQ(h.exit_code, 2);
+  EXPECT_NE(h.err.find("load_sharing = \"iso\": helical pairs use a uniform load"), std::string::npos) << h.err;
 }
 
 TEST(Cli, MalformedJsonGivesLine) {

@@ -53,6 +53,8 @@ ehl::EhlOptions read_grid(model::ObjectReader& root) {
   auto g = root.object("grid");
   o.levels = g.optional_integer("levels", 1, 14).value_or(o.levels);
   o.coarsest_nodes = g.optional_integer("coarsest_nodes", 9, 100001).value_or(o.coarsest_nodes);
+  if (g.has("nodes") && (g.has("levels") || g.has("coarsest_nodes")))
+    throw InputError("grid.nodes: give either nodes or levels with coarsest_nodes, not both");
   if (auto nodes = g.optional_integer("nodes", 9, 1 << 20)) {
     // nodes − 1 = (coarsest − 1)·2^(levels − 1): as many levels as keep ≥ 32 coarse intervals.
     int intervals = *nodes - 1, levels = 1;
@@ -74,6 +76,10 @@ ehl::EhlOptions read_grid(model::ObjectReader& root) {
   o.max_cycles = g.optional_integer("max_cycles", 1, 100000).value_or(o.max_cycles);
   o.tolerance = g.optional_number("tolerance", {0.0, 1.0, true, true}).value_or(o.tolerance);
   g.finish();
+  const long finest = static_cast<long>(o.coarsest_nodes - 1) * (1L << (o.levels - 1)) + 1;
+  if (finest > (1L << 20) + 1)
+    throw InputError(fmt::format("grid: levels = {} from coarsest_nodes = {} gives {} nodes; allowed is "
+                                 "at most 1048577 on the finest grid", o.levels, o.coarsest_nodes, finest));
   return o;
 }
 

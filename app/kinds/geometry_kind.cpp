@@ -76,11 +76,11 @@ json run_geometry(const json& case_json) {
   const geometry::GearPairGeometry g(gear_case.gear_pair);
   const auto& r1 = g.radii(0);
   const auto& r2 = g.radii(1);
-  double single = 0.0, dbl = 0.0;
+  double single = 0.0, dbl = 0.0, more = 0.0;
   json zones = json::array();
   for (const auto& z : g.contact_zones()) {
     zones.push_back({{"begin_mm", z.begin * to_mm}, {"end_mm", z.end * to_mm}, {"pairs", z.pairs}});
-    (z.pairs == 1 ? single : dbl) += z.end - z.begin;
+    (z.pairs == 1 ? single : z.pairs == 2 ? dbl : more) += z.end - z.begin;
   }
   const bool with_speeds = gear_case.operating.has_value();
   const double omega = with_speeds ? gear_case.operating->pinion_speed : 1.0;
@@ -106,6 +106,7 @@ json run_geometry(const json& case_json) {
       {"form_radius_mm", pair_mm(r1.form, r2.form)},
       {"single_contact_length_mm", single * to_mm},
       {"double_contact_length_mm", dbl * to_mm},
+      {"multiple_contact_length_mm", more * to_mm},  // three or more pairs (ε_α ≥ 2)
       {"contact_zones", zones},
       {"profile", profile_json(g, points, omega, with_speeds)},
       {"warnings", g.warnings()},

@@ -8,13 +8,23 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include <exception>
+#include <memory>
 #include <stdexcept>
+#include <utility>
 
 #include "model/errors.h"
 
 namespace gearbench::dynamics {
 
+/// What CVODE calls: the right-hand side, plus where its exception waits for the caller.
+struct RhsHandle {
+  const CvodeIntegrator::Rhs* rhs;
+  std::exception_ptr error;
+};
+
 struct CvodeIntegrator::Handles {
+  std::unique_ptr<RhsHandle> rhs;
   SUNContext context = nullptr;
   N_Vector y = nullptr;
   SUNMatrix matrix = nullptr;
@@ -41,12 +51,13 @@ T* check_pointer(T* pointer, const char* call) {
 }
 
 int rhs_trampoline(realtype t, N_Vector y, N_Vector ydot, void* user_data) {
+  auto& handle = *static_cast<RhsHandle*>(user_data);
   try {
-    const auto& rhs = *static_cast<const CvodeIntegrator::Rhs*>(user_data);
-    rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+    (*handle.rhs)(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
     return 0;
   } catch (...) {
-    return -1;  // unrecoverable: CVODE reports CV_RHSFUNC_FAIL
+    handle.error = std::current_exception();  // rethrown by advance() after CVode returns
+    return -1;                                // unrecoverable: CVODE stops with CV_RHSFUNC_FAIL
   }
 }
 
@@ -63,7 +74,8 @@ CvodeIntegrator::CvodeIntegrator(std::size_t size, Rhs rhs, const CvodeOptions& 
     check_flag(CVodeInit(handles_->cvode, rhs_trampoline, 0.0, handles_->y), "CVodeInit");
     check_flag(CVodeSStolerances(handles_->cvode, options.relative_tolerance, options.absolute_tolerance),
                "CVodeSStolerances");
-    check_flag(CVodeSetUserData(handles_->cvode, &rhs_), "CVodeSetUserData");
+    handles_->rhs = std::make_unique<RhsHandle>(RhsHandle{&rhs_, nullptr});
+    check_flag(CVodeSetUserData(handles_->cvode, handles_->rhs.get()), "CVodeSetUserData");
     check_flag(CVodeSetMaxNumSteps(handles_->cvode, options.max_steps), "CVodeSetMaxNumSteps");
     if (options.method == CvodeMethod::adams) {
       // Non-stiff: Adams–Moulton with fixed-point iteration, no Jacobian and no linear solves.
@@ -113,7 +125,9 @@ const std::vector<double>& CvodeIntegrator::advance(double t_out, double stop) {
   if (!initialised_) throw std::logic_error("CvodeIntegrator::advance before reset");
   check_flag(CVodeSetStopTime(handles_->cvode, stop), "CVodeSetStopTime");
   realtype t = 0.0;
-  check_flag(CVode(handles_->cvode, t_out, handles_->y, &t, CV_NORMAL), "CVode");
+  const int flag = CVode(handles_->cvode, t_out, handles_->y, &t, CV_NORMAL);
+  if (handles_->rhs->error) std::rethrow_exception(std::exchange(handles_->rhs->error, nullptr));
+  check_flag(flag, "CVode");
   const double* data = N_VGetArrayPointer(handles_->y);
   std::copy(data, data + y_.size(), y_.begin());
   return y_;

@@ -35,6 +35,8 @@ void Spur6Options::validate() const {
     throw InputError(fmt::format("runup_cycles = {}: allowed range is [0, 1000000]", runup_cycles));
   if (record_cycles < 2 || record_cycles > 1000000)
     throw InputError(fmt::format("record_cycles = {}: allowed range is [2, 1000000]", record_cycles));
+  if (crack && crack->gear != 0)
+    throw InputError(fmt::format("crack.gear = {}: allowed values are 1 (the pinion)", crack->gear + 1));
   if (samples_per_cycle < 8 || samples_per_cycle > 4096)
     throw InputError(fmt::format("samples_per_cycle = {}: allowed range is [8, 4096]", samples_per_cycle));
 }
@@ -47,7 +49,8 @@ Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
       pair_(geometry, materials, stiffness::BeamStart::improved,
             {0.5 * geometry.radii(0).root, 0.5 * geometry.radii(1).root}, options_.crack, true) {
   if (geometry_.base_helix_angle() > 0.0)
-    throw InputError("model = \"spur6\": gear_pair.helix_angle_deg must be 0 (spur pairs)");
+    throw InputError(fmt::format("gear_pair.helix_angle_deg = {:.6g}: model \"spur6\" needs 0 (a spur pair)",
+                                 geometry_.pair().helix_angle * 180.0 / pi));
   const auto& pair = geometry_.pair();
   // Solid discs of the reference diameter (docs/dynamics-model.md, inertia of the blanks).
   auto disc = [&](int gear, double& m, double& I) {
@@ -74,7 +77,8 @@ Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
   p_.z1 = pair.teeth[0];
   p_.crack_mouth = p_.rb1 * std::tan(geometry_.transverse_pressure_angle());
   if (geometry_.contact_ratio_transverse() >= 2.0)
-    throw InputError("gear_pair: the spur6 model handles 1 <= contact ratio < 2 (one or two pairs)");
+    throw InputError(fmt::format("gear_pair: transverse contact ratio {:.4f}; model \"spur6\" allows [1, 2) "
+                                 "(one or two pairs in contact)", geometry_.contact_ratio_transverse()));
 
   std::vector<double> s(spline_nodes), k(spline_nodes);
   for (int i = 0; i < spline_nodes; ++i) {
@@ -86,7 +90,7 @@ Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
   constexpr int samples = 720;
   for (int i = 0; i < samples; ++i) {
     const double s0 = p_.A + p_.pbt * i / samples;
-    for (double t = s0; t <= p_.E; t += p_.pbt) sum += pair_stiffness(t);
+    for (const double t : geometry_.positions_in_contact(s0)) sum += pair_stiffness(t);
   }
   p_.mean_mesh_stiffness = sum / samples;
   const double me = p_.I1 * p_.I2 / (p_.I1 * p_.rb2 * p_.rb2 + p_.I2 * p_.rb1 * p_.rb1);
@@ -218,7 +222,8 @@ void amplitude_spectrum(const std::vector<double>& v, double dt, std::vector<dou
   a.resize(out.size());
   for (std::size_t k = 0; k < out.size(); ++k) {
     f[k] = static_cast<double>(k) / (n * dt);
-    a[k] = (k == 0 ? 1.0 : 2.0) * std::abs(out[k]) / n;
+    const bool unpaired = k == 0 || 2 * static_cast<int>(k) == n;  // DC and Nyquist have no mirror
+    a[k] = (unpaired ? 1.0 : 2.0) * std::abs(out[k]) / n;
   }
 }
 
@@ -231,7 +236,7 @@ Spur6Result Spur6Dynamics::solve() const {
   // With a cracked tooth the response repeats once per revolution (z1 mesh cycles).
   const int period_cycles = cracked ? p_.z1 : 1;
   const int runup = (options_.runup_cycles + period_cycles - 1) / period_cycles * period_cycles;
-  const int record = std::max(options_.record_cycles, 2 * period_cycles) / period_cycles * period_cycles;
+  const int record = (std::max(options_.record_cycles, 2 * period_cycles) + period_cycles - 1) / period_cycles * period_cycles;
   const double t_record = runup * T_mesh;
   const double t_end = (runup + record) * T_mesh;
   const double dt = T_mesh / options_.samples_per_cycle;

@@ -4,7 +4,7 @@
 // single-pair stiffness, healthy or with a cracked pinion tooth, integrated by SUNDIALS
 // CVODE with a stop and restart at every stiffness switch.
 //
-// Pipeline: parameters from the case → single-pair stiffness curves (spline) → static
+// Pipeline: parameters from the case → single-pair stiffness (healthy: spline) → static
 // state → run-up over whole revolutions/mesh cycles → recorded window at a fixed sample
 // rate → statistics, spectrum (FFTW), natural frequencies of the mean-stiffness system.
 #include <array>
@@ -27,7 +27,7 @@ struct Spur6Options {
   double friction_coefficient = 0.06;  ///< μ (seed 003)
   std::optional<stiffness::GearCrack> crack;
   int runup_cycles = 60;             ///< mesh cycles before recording (whole revolutions with a crack)
-  int record_cycles = 40;            ///< mesh cycles recorded (one revolution at least with a crack)
+  int record_cycles = 40;            ///< mesh cycles recorded (at least two revolutions with a crack)
   int samples_per_cycle = 64;
   CvodeOptions integrator;
 
@@ -92,7 +92,7 @@ class Spur6Dynamics {
   Spur6Options options_;
   Spur6Parameters p_;
   stiffness::PairStiffness pair_;
-  std::optional<stiffness::CubicSpline> healthy_, cracked_;
+  std::optional<stiffness::CubicSpline> healthy_;  ///< healthy pair; a cracked pair is integrated directly
 };
 
 }  // namespace gearbench::dynamics

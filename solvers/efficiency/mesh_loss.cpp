@@ -21,7 +21,13 @@ void MeshLossOptions::validate() const {
 MeshLoss::MeshLoss(const geometry::GearPairGeometry& geometry, const model::OperatingPoint& operating,
                    MeshLossOptions options)
     : geometry_(geometry), operating_(operating), options_((options.validate(), std::move(options))),
-      sharing_(geometry::make_load_sharing(options_.load_sharing, "load_sharing")) {}
+      sharing_(geometry::make_load_sharing(options_.load_sharing, "load_sharing")) {
+  // Helical pairs carry a uniform load per unit contact-line length; a transverse sharing
+  // rule has no meaning there.
+  if (geometry_.base_helix_angle() > 0.0 && options_.load_sharing != "equal")
+    throw InputError(fmt::format("load_sharing = \"{}\": helical pairs use a uniform load per unit "
+                                 "contact-line length; allowed is \"equal\"", options_.load_sharing));
+}
 
 double MeshLoss::sliding_speed(double s) const {
   return std::abs(geometry_.kinematics(s, operating_.pinion_speed).sliding);
@@ -29,11 +35,9 @@ double MeshLoss::sliding_speed(double s) const {
 
 // Spur: each pair in contact carries its share of the normal force F_bn = T1/r_b1.
 double MeshLoss::spur_loss(double s0) const {
-  const auto& p = geometry_.path();
-  const double pb = geometry_.base_pitch_transverse();
   const double normal_force = operating_.pinion_torque / geometry_.radii(0).base;
   double loss = 0.0;
-  for (double s = s0 - std::floor((s0 - p.A) / pb) * pb; s <= p.E; s += pb)
+  for (const double s : geometry_.positions_in_contact(s0))
     loss += options_.friction_coefficient * sharing_->share(geometry_, s) * normal_force * sliding_speed(s);
   return loss;
 }

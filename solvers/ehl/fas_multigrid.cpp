@@ -103,6 +103,7 @@ class FasMultigrid::Impl {
     initial_guess(*levels_.front());
     levels_.front()->g = state_.load;
     solve_coarsest(*levels_.front(), 20);
+    if (levels_.size() == 2) snapshot_coarse(*levels_.front());
     // Full multigrid: interpolate each converged level to the next and cycle there.
     for (std::size_t k = 1; k < levels_.size(); ++k) {
       interpolate_solution(*levels_[k - 1], *levels_[k]);
@@ -110,10 +111,9 @@ class FasMultigrid::Impl {
       std::fill(levels_[k]->f.begin(), levels_[k]->f.end(), 0.0);
       finest_ = k;
       for (int c = 0; c < 2; ++c) cycle(k);
-      if (k + 1 == levels_.size() - 1 || levels_.size() == 2) snapshot_coarse(*levels_[k]);
+      if (k + 2 == levels_.size()) snapshot_coarse(*levels_[k]);  // the next-to-finest grid
     }
     finest_ = levels_.size() - 1;
-    if (levels_.size() == 1) snapshot_coarse(*levels_.front());
   }
 
   /// Cycles on the finest grid until the residual and the force balance meet the tolerance.
@@ -373,7 +373,7 @@ class FasMultigrid::Impl {
     const auto& d = problem_.data();
     double force = 0.0;
     for (std::size_t i = 1; i + 1 < l.n; ++i) {
-      if (l.P[i] <= 0.0) continue;
+      if (l.P[i] <= 0.0 || l.H[i] <= 0.0) continue;  // no full film: no Couette–Poiseuille shear
       const double h = l.H[i] * hs;
       const double dpdx = (l.P[i + 1] - l.P[i - 1]) / (2.0 * l.h) * ps / ls;
       const double eta = d.viscosity * problem_.viscosity(l.P[i]);
@@ -383,7 +383,7 @@ class FasMultigrid::Impl {
     r.friction_coefficient = force / d.load_per_length;
     r.coarse_h_min = coarse_h_min_;
     r.coarse_p_max = coarse_p_max_;
-    if (coarse_h_min_ > 0.0) {
+    if (coarse_h_min_ > 0.0 && r.h_min > 0.0 && r.p_max > 0.0) {
       r.h_min_change = std::abs(r.h_min - coarse_h_min_) / r.h_min;
       r.p_max_change = std::abs(r.p_max - coarse_p_max_) / r.p_max;
     }

@@ -36,6 +36,7 @@ LineContactData LineContactData::from_moes(double M, double L) {
   d.pressure_viscosity = L / std::pow(U_sum, 0.25) / d.reduced_modulus;
   d.viscosity_model = ViscosityModel::barus;
   d.density_model = DensityModel::incompressible;
+  d.pressure_viscosity_key = "moes.L";
   return d;
 }
 
@@ -59,14 +60,26 @@ LineContactProblem::LineContactProblem(const LineContactData& data) : data_(data
   lambda_ = 12.0 * data.viscosity * u * R * R / (ell_ * ell_ * ell_ * p_r_);
   D_ = 4.0 * p_r_ * R / (E * ell_);
   F_ = w / (p_r_ * ell_);
+  // Roelands' asymptote η∞ = 6.31e-5 Pa·s: at or below it the law no longer rises with p.
+  const double eta_inf = std::exp(-lubricant::roelands_ln_eta_inf);
+  if (data.viscosity_model == ViscosityModel::roelands && data.viscosity <= eta_inf)
+    throw InputError(fmt::format("lubricant.viscosity_Pa_s = {:.6g}: allowed is > {:.3g} Pa*s (Roelands' "
+                                 "asymptotic viscosity) with viscosity_model \"roelands\"", data.viscosity, eta_inf));
   roelands_z_ = data.roelands_z > 0.0 ? data.roelands_z
                                       : lubricant::roelands_z_from_alpha(data.viscosity, data.pressure_viscosity);
   // Barus at ᾱ = α·p_h beyond ~40 means η/η0 ~ e^40 and more: no meaningful lubricant.
   const double alpha_bar = data.pressure_viscosity * p_h_;
-  if (data.viscosity_model == ViscosityModel::barus && alpha_bar > 40.0)
-    throw InputError(fmt::format(
-        "lubricant.pressure_viscosity_1_per_GPa: ᾱ = α·p_h = {:.1f} exceeds 40 (viscosity ratio "
-        "e^{:.0f} at the Hertz pressure); allowed is α·p_h <= 40 with Barus", alpha_bar, alpha_bar));
+  if (data.viscosity_model == ViscosityModel::barus && alpha_bar > 40.0) {
+    const std::string value = data.pressure_viscosity_key == "moes.L"
+                                  ? fmt::format("{:.6g}", data.moes_L())
+                                  : fmt::format("{:.6g}", data.pressure_viscosity * 1e9);
+    const std::string allowed = data.pressure_viscosity_key == "moes.L"
+                                    ? fmt::format("L <= {:.4g} at this M", data.moes_L() * 40.0 / alpha_bar)
+                                    : fmt::format("<= {:.4g} 1/GPa at this load", 40.0 / p_h_ * 1e-9);
+    throw InputError(fmt::format("{} = {}: ᾱ = α·p_h = {:.1f} exceeds 40 (viscosity ratio e^{:.0f} at the "
+                                 "Hertz pressure with Barus); allowed is {}",
+                                 data.pressure_viscosity_key, value, alpha_bar, alpha_bar, allowed));
+  }
 }
 
 double LineContactProblem::x_in() const {

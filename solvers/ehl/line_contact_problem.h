@@ -5,7 +5,7 @@
 //   H = H0 + X²/2 − (D/π)∫ln|X − X'|P dX',  D = 4p_r·R/(E'ℓ),
 //   ∫P dX = F = w/(p_r·ℓ),  P ≥ 0 (Reynolds outlet by complementarity).
 // Hertzian scaling (ℓ = b, p_r = p_h) gives D = 1, F = π/2 and Venner's λ̄; it is used when
-// the contact is elastic (Moes M ≥ 2). Below that the Hertz width no longer measures the
+// the contact is elastic (Moes M ≥ 3). Below that the Hertz width no longer measures the
 // pressure zone, and the rigid-isoviscous length ℓ = √(2R·h_M) with Martin's film
 // h_M = 4.8950·η0ūR/w and p_r = w/ℓ is used (F = 1, λ = 6/4.8950, D → 0 for rigid solids).
 #include <string>
@@ -27,6 +27,8 @@ struct LineContactData {
   double pressure_viscosity = 0.0; ///< α [1/Pa]
   double roelands_z = 0.0;         ///< z (0: derived from α)
   ViscosityModel viscosity_model = ViscosityModel::roelands;
+  /// The case key that sets α, for error messages ("moes.L" for Moes input).
+  std::string pressure_viscosity_key = "lubricant.pressure_viscosity_1_per_GPa";
   DensityModel density_model = DensityModel::dowson_higginson;
 
   [[nodiscard]] double mean_speed() const { return 0.5 * (u1 + u2); }

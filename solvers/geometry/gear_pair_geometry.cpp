@@ -196,6 +196,16 @@ int GearPairGeometry::pairs_in_contact(double s) const {
   return static_cast<int>(std::max(0L, k_hi - k_lo + 1));
 }
 
+std::vector<double> GearPairGeometry::positions_in_contact(double s) const {
+  const double tol = 1e-12 * base_pitch_;
+  const auto k_lo = static_cast<long>(std::ceil((path_.A - s - tol) / base_pitch_));
+  const auto k_hi = static_cast<long>(std::floor((path_.E - s + tol) / base_pitch_));
+  std::vector<double> positions;
+  for (long k = k_lo; k <= k_hi; ++k)
+    positions.push_back(std::clamp(s + static_cast<double>(k) * base_pitch_, path_.A, path_.E));
+  return positions;
+}
+
 std::vector<ContactZone> GearPairGeometry::contact_zones() const {
   std::vector<double> breaks{path_.A, path_.E};
   for (double s = path_.A + base_pitch_; s < path_.E; s += base_pitch_) breaks.push_back(s);

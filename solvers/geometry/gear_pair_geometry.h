@@ -87,6 +87,9 @@ class GearPairGeometry {
 
   /// Number of tooth pairs in contact when one pair is at s (transverse plane).
   [[nodiscard]] int pairs_in_contact(double s) const;
+  /// Positions of the pairs in contact when one pair is at s (the pairs one base pitch
+  /// apart on A..E, counted by integer offsets so that none is lost to rounding).
+  [[nodiscard]] std::vector<double> positions_in_contact(double s) const;
   /// The path A..E split into zones of constant pair count (spur / transverse view).
   [[nodiscard]] std::vector<ContactZone> contact_zones() const;
 

@@ -27,7 +27,8 @@ void MeshStiffnessOptions::validate() const {
 namespace {
 void reject_helical_crack(const geometry::GearPairGeometry& g, const MeshStiffnessOptions& o) {
   if (o.crack && g.base_helix_angle() > 0.0)
-    throw InputError("crack: cracks are modelled for spur gears only (helix_angle_deg must be 0)");
+    throw InputError(fmt::format("gear_pair.helix_angle_deg = {:.6g}: cracks are modelled for spur gears only "
+                                 "(allowed is 0 with a crack)", g.pair().helix_angle * 180.0 / M_PI));
 }
 }  // namespace
 
@@ -100,11 +101,9 @@ void MeshStiffness::single_pair_curve(MeshStiffnessResult& r) const {
 }
 
 double MeshStiffness::transverse_stiffness_per_width(double s0, bool cracked_reference) const {
-  const auto& p = geometry_.path();
   const double pb = geometry_.base_pitch_transverse();
-  const double first = s0 - std::floor((s0 - p.A) / pb) * pb;
   double k = 0.0;
-  for (double s = first; s <= p.E; s += pb) {
+  for (const double s : geometry_.positions_in_contact(s0)) {
     const bool is_reference = std::abs(s - s0) < 0.5 * pb;
     k += pair_stiffness_per_width(s, !(cracked_reference && is_reference));
   }

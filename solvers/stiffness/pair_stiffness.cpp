@@ -65,10 +65,8 @@ double PairStiffness::stiffness_per_width(double s, ToothCompliance::CrackMode m
 double StiffnessLoadSharing::share(const geometry::GearPairGeometry& g, double s) const {
   const auto& p = g.path();
   if (s < p.A || s > p.E) return 0.0;
-  const double pb = g.base_pitch_transverse();
   double total = 0.0;
-  for (double t = s - std::floor((s - p.A) / pb) * pb; t <= p.E; t += pb)
-    total += pair_.stiffness_per_width(t, true);
+  for (const double t : g.positions_in_contact(s)) total += pair_.stiffness_per_width(t, true);
   return pair_.stiffness_per_width(s, true) / total;
 }
 
