@@ -24,24 +24,26 @@ namespace {
 /// Benchmark family: the name without its arguments ("BM_X/101" -> "BM_X").
 std::string family(const std::string& run_name) { return run_name.substr(0, run_name.find('/')); }
 
+/// Solver over baseline for every run X[/args] that has a run X_baseline[/args] with the same
+/// arguments, or a baseline without arguments for its whole family.
 json side_by_side_ratios(const json& benchmarks) {
-  std::map<std::string, std::pair<std::string, double>> times;  // family -> (run name, time)
+  std::map<std::string, double> times;  // run name -> time
   for (const auto& b : benchmarks)
-    if (b.value("run_type", "iteration") == "iteration" || b.value("aggregate_name", "") == "median") {
-      const auto name = b["run_name"].get<std::string>();
-      times.try_emplace(family(name), name, b["real_time"].get<double>());
-    }
-  json ratios = json::object();
+    if (b.value("run_type", "iteration") == "iteration" || b.value("aggregate_name", "") == "median")
+      times.try_emplace(b["run_name"].get<std::string>(), b["real_time"].get<double>());
   const std::string suffix = "_baseline";
-  for (const auto& [fam, baseline] : times) {
-    if (fam.size() <= suffix.size() || fam.compare(fam.size() - suffix.size(), suffix.size(), suffix) != 0)
-      continue;
-    const auto it = times.find(fam.substr(0, fam.size() - suffix.size()));
-    if (it == times.end() || baseline.second <= 0.0) continue;
-    ratios[it->second.first] = {{"baseline", baseline.first},
-                                {"solver_time", it->second.second},
-                                {"baseline_time", baseline.second},
-                                {"ratio", it->second.second / baseline.second}};
+  json ratios = json::object();
+  for (const auto& [name, time] : times) {
+    const std::string fam = family(name);
+    if (fam.size() > suffix.size() && fam.compare(fam.size() - suffix.size(), suffix.size(), suffix) == 0) continue;
+    const std::string args = name.substr(fam.size());
+    for (const std::string& baseline : {fam + suffix + args, fam + suffix}) {
+      const auto it = times.find(baseline);
+      if (it == times.end() || it->second <= 0.0) continue;
+      ratios[name] = {{"baseline", baseline}, {"solver_time", time}, {"baseline_time", it->second},
+                      {"ratio", time / it->second}};
+      break;
+    }
   }
   return ratios;
 }

@@ -13,7 +13,8 @@ enum ExitCode : int {
 };
 
 int run_command(const std::string& case_path, const std::string& output_path);
-int verify_command(const std::string& tier, const std::string& out_dir, const std::string& cases_dir);
+int verify_command(const std::string& tier, const std::string& out_dir, const std::string& cases_dir,
+                   const std::string& bench_record);
 int report_compare_command(const std::string& before, const std::string& after);
 int bench_command(const std::string& out_dir, const std::string& filter, double min_time);
 

@@ -32,6 +32,8 @@ int main(int argc, char** argv) {
   verify->add_option("--tier", tier, "fast or full")->check(CLI::IsMember({"fast", "full"}));
   verify->add_option("--out", out_dir, "parent folder of the report")->capture_default_str();
   verify->add_option("--cases", cases_dir, "folder of the built-in cases")->capture_default_str();
+  std::string bench_record;
+  verify->add_option("--bench", bench_record, "a `gearbench bench` record to include as the Benchmarks section");
 
   auto* report = cli.add_subcommand("report", "work with reports");
   report->require_subcommand(1);
@@ -56,7 +58,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*run) return run_command(case_path, output_path);
-    if (*verify) return verify_command(tier, out_dir, cases_dir);
+    if (*verify) return verify_command(tier, out_dir, cases_dir, bench_record);
     if (*compare) return report_compare_command(before, after);
     if (*bench) return bench_command(bench_out, filter, min_time);
   } catch (const gearbench::InputError& e) {

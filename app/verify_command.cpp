@@ -2,7 +2,9 @@
 #include <fmt/format.h>
 #include <iostream>
 
+#include "bench_section.h"
 #include "build_info.h"
+#include "model/json_reader.h"
 #include "check_registry.h"
 #include "commands.h"
 #include "model/errors.h"
@@ -12,13 +14,15 @@ namespace gearbench::app {
 std::string default_output_dir() { return std::string(build::source_dir()) + "/reports/out"; }
 std::string default_cases_dir() { return std::string(build::source_dir()) + "/cases"; }
 
-int verify_command(const std::string& tier, const std::string& out_dir, const std::string& cases_dir) {
+int verify_command(const std::string& tier, const std::string& out_dir, const std::string& cases_dir,
+                   const std::string& bench_record) {
   const auto parsed = verification::parse_tier(tier);
   if (!std::filesystem::is_directory(cases_dir))
     throw InputError(fmt::format("--cases {}: not a directory", cases_dir));
   const verification::CheckContext context{cases_dir};
-  const auto report = verification::run_verification(
+  auto report = verification::run_verification(
       parsed, context, [](const std::string& line) { std::cerr << line << std::endl; });
+  if (!bench_record.empty()) report.notes.push_back(reports::benchmark_note(model::read_json_file(bench_record)));
   const std::string folder = reports::write_report(report, out_dir);
   std::cerr << fmt::format("{} of {} checks pass\n", report.checks.size() - report.failures(),
                            report.checks.size());

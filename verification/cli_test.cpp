@@ -374,6 +374,15 @@ TEST(Cli, BenchRecordsContextAndRatio) {
   EXPECT_TRUE(record["gearbench"]["machine"].contains("fingerprint"));
   ASSERT_TRUE(record["ratios"].contains("BM_GeometryProfile/101")) << record["ratios"].dump();
   EXPECT_GT(record["ratios"]["BM_GeometryProfile/101"]["ratio"].get<double>(), 0.0);
+
+  // The record becomes the report's Benchmarks section.
+  const auto verify = run_gearbench("verify --out " + (dir / "reports").string() + " --bench " +
+                                    o.out.substr(0, o.out.find('\n')));
+  ASSERT_EQ(verify.exit_code, 0) << verify.err;
+  std::ifstream md(verify.out.substr(0, verify.out.find('\n')));
+  const std::string text(std::istreambuf_iterator<char>(md), {});
+  EXPECT_NE(text.find("## Benchmarks"), std::string::npos);
+  EXPECT_NE(text.find("| `BM_GeometryProfile/101` | `BM_GeometryProfile_baseline` |"), std::string::npos);
   fs::remove_all(dir);
 }
 

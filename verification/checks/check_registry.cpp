@@ -7,6 +7,17 @@
 
 namespace gearbench::verification {
 
+model::GearCase CheckContext::gear_case(const std::string& file) const {
+  const auto json = model::read_json_file(case_path(file));
+  model::ObjectReader root(json, "");
+  return model::read_gear_case(root);
+}
+
+std::vector<double> scaled(std::vector<double> v, double factor) {
+  for (auto& x : v) x *= factor;
+  return v;
+}
+
 Registry& Registry::instance() {
   static Registry registry;
   return registry;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "model/case_reader.h"
 #include "report.h"
 
 namespace gearbench::verification {
@@ -19,7 +20,12 @@ enum class Tier { fast, full };
 struct CheckContext {
   std::string cases_dir;
   [[nodiscard]] std::string case_path(const std::string& file) const { return cases_dir + "/" + file; }
+  /// The gear-pair sections of a case file (the kind's own keys are not read).
+  [[nodiscard]] model::GearCase gear_case(const std::string& file) const;
 };
+
+/// A copy of v with every element multiplied by factor (unit changes for figures).
+std::vector<double> scaled(std::vector<double> v, double factor);
 
 struct CheckValue {
   double value = 0.0;

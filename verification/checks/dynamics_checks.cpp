@@ -9,7 +9,6 @@
 
 #include "check_registry.h"
 #include "dynamics/spur6_dynamics.h"
-#include "model/case_reader.h"
 #include "ode/spur6_rk4.h"
 
 namespace gearbench::verification {
@@ -29,9 +28,7 @@ struct DynamicsCase {
 };
 
 DynamicsCase seed003(const CheckContext& ctx) {
-  const auto json = model::read_json_file(ctx.case_path("seed003_spur_dynamics.json"));
-  model::ObjectReader root(json, "");
-  const auto c = model::read_gear_case(root);
+  const auto c = ctx.gear_case("seed003_spur_dynamics.json");
   return {c.gear_pair, *c.materials, *c.operating};
 }
 
@@ -227,37 +224,29 @@ const CrackRuns& crack_runs(const CheckContext& ctx) {
 
 const CrackEffect& crack_effect(const CheckContext& ctx) { return crack_runs(ctx).effect; }
 
-const RegisterCheck seed003_force(CheckSpec{
-    .id = "seed003.mesh_force_decrease_2_5mm", .section = seed_section, .solver = solver,
-    .reference = "seed 003 (−3.6 %)", .quantity = "largest drop of the mesh force, 2.5 mm crack",
-    .unit = "%", .tolerance = {1.0, 0},
-    .justification = "one percentage point; torque, bearings and damping are not given by the seed",
-    .tier = Tier::fast,
-    .run = [](const CheckContext& ctx) { return CheckValue{100 * crack_effect(ctx).force_decrease, 3.6}; },
-    .recorded = 32.24, .recorded_tolerance = 0.02});
-
-const RegisterCheck seed003_friction(CheckSpec{
-    .id = "seed003.friction_force_decrease_2_5mm", .section = seed_section, .solver = solver,
-    .reference = "seed 003 (−14.8 %)", .quantity = "largest drop of the friction force, 2.5 mm crack",
-    .unit = "%", .tolerance = {1.0, 0},
-    .justification = "one percentage point; torque, bearings and damping are not given by the seed",
-    .tier = Tier::fast,
-    .run = [](const CheckContext& ctx) { return CheckValue{100 * crack_effect(ctx).friction_decrease, 14.8}; },
-    .recorded = 15.65, .recorded_tolerance = 0.02});
-
-const RegisterCheck seed003_te(CheckSpec{
-    .id = "seed003.transmission_error_increase_2_5mm", .section = seed_section, .solver = solver,
-    .reference = "seed 003 (+12.2 %)", .quantity = "largest rise of the transmission error, 2.5 mm crack (of its healthy peak)",
-    .unit = "%", .tolerance = {1.0, 0},
-    .justification = "one percentage point; torque, bearings and damping are not given by the seed",
-    .tier = Tier::fast,
-    .run = [](const CheckContext& ctx) { return CheckValue{100 * crack_effect(ctx).te_increase, 12.2}; },
-    .recorded = 41.28, .recorded_tolerance = 0.02});
-
-std::vector<double> scaled(std::vector<double> v, double factor) {
-  for (auto& x : v) x *= factor;
-  return v;
+/// One seed 003 figure: the paper's percentage against the pointwise crack effect.
+void register_seed003(const std::string& name, const std::string& quantity, double paper,
+                      double CrackEffect::*effect, double recorded) {
+  Registry::instance().add(CheckSpec{
+      .id = "seed003." + name, .section = seed_section, .solver = solver,
+      .reference = fmt::format("seed 003 ({} %)", paper), .quantity = quantity, .unit = "%",
+      .tolerance = {1.0, 0},
+      .justification = "one percentage point; torque, bearings and damping are not given by the seed",
+      .tier = Tier::fast,
+      .run = [paper, effect](const CheckContext& ctx) { return CheckValue{100 * (crack_effect(ctx).*effect), paper}; },
+      .recorded = recorded, .recorded_tolerance = 0.02});
 }
+
+const bool seed003_checks = [] {
+  register_seed003("mesh_force_decrease_2_5mm", "largest drop of the mesh force, 2.5 mm crack", 3.6,
+                   &CrackEffect::force_decrease, 32.24);
+  register_seed003("friction_force_decrease_2_5mm", "largest drop of the friction force, 2.5 mm crack", 14.8,
+                   &CrackEffect::friction_decrease, 15.65);
+  register_seed003("transmission_error_increase_2_5mm",
+                   "largest rise of the transmission error, 2.5 mm crack (of its healthy peak)", 12.2,
+                   &CrackEffect::te_increase, 41.28);
+  return true;
+}();
 
 const RegisterSection dynamics_section(SectionSpec{
     .id = "dynamics", .tier = Tier::fast, .add = [](const CheckContext& ctx, reports::Report& report) {

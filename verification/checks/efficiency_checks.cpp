@@ -7,7 +7,6 @@
 #include "check_registry.h"
 #include "closed_form/efficiency_closed_form.h"
 #include "efficiency/mesh_loss.h"
-#include "model/case_reader.h"
 
 namespace gearbench::verification {
 namespace {
@@ -25,9 +24,7 @@ struct LossCase {
 };
 
 LossCase load_case(const CheckContext& ctx, const std::string& file) {
-  const auto json = model::read_json_file(ctx.case_path(file));
-  model::ObjectReader root(json, "");
-  const auto c = model::read_gear_case(root);
+  const auto c = ctx.gear_case(file);
   return {c.gear_pair, *c.operating};
 }
 
@@ -103,11 +100,6 @@ const RegisterCheck agma(CheckSpec{
                         {{"with_transverse_20deg", 100.0 * reference::agma6011_efficiency(17, 44, 20.0)}}};
     },
     .recorded = 98.8040, .recorded_tolerance = 1e-4});
-
-std::vector<double> scaled(std::vector<double> v, double factor) {
-  for (auto& x : v) x *= factor;
-  return v;
-}
 
 const RegisterSection efficiency_section(SectionSpec{
     .id = "efficiency", .tier = Tier::fast, .add = [](const CheckContext& ctx, reports::Report& report) {

@@ -11,7 +11,6 @@
 #include "closed_form/involute_closed_form.h"
 #include "geometry/gear_pair_geometry.h"
 #include "geometry/load_sharing.h"
-#include "model/case_reader.h"
 
 namespace gearbench::verification {
 namespace {
@@ -27,9 +26,7 @@ const char* rounding_why =
     "relative, amplified by at most ~1e3 in differences of radii) separates them";
 
 model::GearPair load_pair(const CheckContext& ctx, const std::string& file) {
-  const auto json = model::read_json_file(ctx.case_path(file));
-  model::ObjectReader root(json, "");
-  return model::read_gear_case(root).gear_pair;
+  return ctx.gear_case(file).gear_pair;
 }
 
 struct SeedCase {

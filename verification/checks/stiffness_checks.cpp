@@ -9,7 +9,6 @@
 #include "check_registry.h"
 #include "closed_form/iso6336_stiffness.h"
 #include "closed_form/sainsot_foundation.h"
-#include "model/case_reader.h"
 #include "quadrature/energy_quadrature.h"
 #include "stiffness/mesh_stiffness.h"
 
@@ -30,9 +29,7 @@ struct StiffnessCase {
 };
 
 StiffnessCase load_case(const CheckContext& ctx, const std::string& file) {
-  const auto json = model::read_json_file(ctx.case_path(file));
-  model::ObjectReader root(json, "");
-  auto c = model::read_gear_case(root);
+  const auto c = ctx.gear_case(file);
   return {c.gear_pair, *c.materials};
 }
 
@@ -420,11 +417,6 @@ const RegisterCheck seed003_shear_drop(CheckSpec{
     .recorded = 55.0, .recorded_tolerance = 0.01});
 
 // --- Figures and notes ----------------------------------------------------------------------
-
-std::vector<double> scaled(std::vector<double> v, double factor) {
-  for (auto& x : v) x *= factor;
-  return v;
-}
 
 void add_seed003_figures(const CheckContext& ctx, reports::Report& report) {
   const auto c = seed003(ctx);
