@@ -246,6 +246,54 @@ TEST(Cli, EhlLineBadInput) {
   }
 }
 
+// A short march (8 steps, 161 nodes) runs through; bad input exits 2 naming the key; a step
+// that cannot converge exits 3 with the steps so far in -o.
+TEST(Cli, EhlTransientRunsAndValidates) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed004_transient_ehl.json");
+  const auto seed = json::parse(in);
+  auto small = seed;
+  small["time_steps"] = 8;
+  small["grid"] = {{"levels", 3}};
+  const auto o = run_gearbench("run " + write_case("ehl_transient_small", small.dump()));
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  EXPECT_EQ(r["steps"]["h_min_m"].size(), 9u);
+  for (const char* point : {"A", "B", "C", "D", "E"}) EXPECT_TRUE(r["profiles"].contains(point)) << point;
+  EXPECT_GT(r["p_max_Pa"].get<double>(), r["reference"]["hertz_pressure_Pa"].get<double>() * 0.8);
+
+  const std::pair<std::string, std::string> bad[] = {
+      {R"("time_steps": 2)", "time_steps = 2: allowed range is [4, 100000]"},
+      {R"("load_sharing": "stiffness")", "load_sharing"},
+      {R"("gear_pair": {"teeth": [22, 32], "normal_module_mm": 2.0, "normal_pressure_angle_deg": 25.0,
+          "face_width_mm": 20.0, "helix_angle_deg": 15})", "the pair is helical"},
+      {R"("rheology": {"viscosity_model": "eyring"})", "rheology.viscosity_model"},
+  };
+  int n = 0;
+  for (const auto& [patch, expected] : bad) {
+    auto j = small;
+    j.merge_patch(json::parse("{" + patch + "}"));
+    const auto b = run_gearbench("run " + write_case("ehl_transient_bad_" + std::to_string(n++), j.dump()));
+    EXPECT_EQ(b.exit_code, 2) << patch << "\n" << b.err;
+    EXPECT_NE(b.err.find(expected), std::string::npos) << b.err;
+  }
+  auto no_oil = small;
+  no_oil.erase("lubricant");
+  const auto b = run_gearbench("run " + write_case("ehl_transient_no_oil", no_oil.dump()));
+  EXPECT_EQ(b.exit_code, 2);
+  EXPECT_NE(b.err.find("lubricant: missing required key"), std::string::npos) << b.err;
+
+  auto stuck = small;
+  stuck["grid"]["max_cycles"] = 1;
+  const auto out = temp_path("ehl_transient_unconverged.json").string();
+  const auto failed = run_gearbench("run " + write_case("ehl_transient_stuck", stuck.dump()) + " -o " + out);
+  EXPECT_EQ(failed.exit_code, 3) << failed.err;
+  EXPECT_NE(failed.err.find("did not converge"), std::string::npos) << failed.err;
+  std::ifstream diag(out);
+  const auto d = json::parse(diag);
+  EXPECT_FALSE(d["diagnostics"]["converged"].get<bool>());
+  fs::remove(out);
+}
+
 TEST(Cli, DynamicsRunsAndValidates) {
   std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics.json");
   auto j = json::parse(in);
