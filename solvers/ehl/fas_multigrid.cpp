@@ -140,7 +140,10 @@ class FasMultigrid::Impl {
 
   // --- state -------------------------------------------------------------------------
   void update_film(Level& l) {
-    l.deformation.apply(l.P, l.W);
+    if (o_.direct_deformation)
+      l.deformation.apply_direct(l.P, l.W);
+    else
+      l.deformation.apply(l.P, l.W);
     const double c = problem_.deformation_factor() / pi;
     const double kappa = state_.curvature;
     for (std::size_t i = 0; i < l.n; ++i) l.H[i] = H0_ + 0.5 * kappa * l.X[i] * l.X[i] - c * l.W[i];

@@ -34,6 +34,7 @@ struct EhlOptions {
                                   ///< (S = 1 Hertzian, the film guess in rigid units)
   double xi_threshold = 0.3;      ///< ε/h² splitting Gauss–Seidel from Jacobi
   double x_in = 0.0, x_out = 0.0; ///< domain; both 0 picks the problem's default
+  bool direct_deformation = false; ///< the O(n²) sum instead of the FFT (the benchmarks' baseline)
 
   void validate() const;          ///< InputError naming the key
 };
