@@ -5,6 +5,7 @@
 
 #include "build_info.h"
 #include "commands.h"
+#include "interrupt.h"
 #include "model/errors.h"
 
 namespace {
@@ -49,6 +50,7 @@ int main(int argc, char** argv) {
   bench->add_option("--filter", filter, "regular expression selecting benchmarks");
   bench->add_option("--min-time", min_time, "minimum seconds per benchmark")->capture_default_str();
 
+  install_interrupt_handler();
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -3,12 +3,16 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
+#include <vector>
 
 namespace {
 
@@ -292,6 +296,40 @@ TEST(Cli, EhlTransientRunsAndValidates) {
   const auto d = json::parse(diag);
   EXPECT_FALSE(d["diagnostics"]["converged"].get<bool>());
   fs::remove(out);
+}
+
+/// Starts gearbench with `args`, sends SIGINT after `delay`, and returns its exit status.
+int interrupt_gearbench(const std::vector<std::string>& args, std::chrono::milliseconds delay) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::vector<char*> argv{const_cast<char*>(GEARBENCH_EXE)};
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::freopen("/dev/null", "w", stdout);
+    ::freopen("/dev/null", "w", stderr);
+    ::execv(GEARBENCH_EXE, argv.data());
+    ::_exit(127);
+  }
+  std::this_thread::sleep_for(delay);
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Ctrl-C ends a run with exit code 130 and writes nothing: no result file, no report folder,
+// no temporary left behind.
+TEST(Cli, InterruptWritesNothing) {
+  const auto out = temp_path("interrupted_run.json");
+  EXPECT_EQ(interrupt_gearbench({"run", GEARBENCH_SOURCE_DIR "/cases/seed004_transient_ehl.json", "-o", out.string()},
+                                std::chrono::milliseconds(700)), 130);
+  EXPECT_FALSE(fs::exists(out));
+
+  const auto dir = temp_path("interrupted_verify");
+  fs::create_directories(dir);
+  EXPECT_EQ(interrupt_gearbench({"verify", "--out", dir.string()}, std::chrono::milliseconds(1500)), 130);
+  EXPECT_TRUE(fs::is_empty(dir)) << "an interrupted verify left files in " << dir;
+  fs::remove_all(dir);
 }
 
 TEST(Cli, DynamicsRunsAndValidates) {

@@ -336,7 +336,7 @@ const RegisterSection ehl_section(SectionSpec{
             const LineContactProblem p(d);
             EhlOptions o;
             o.levels = 5;
-            o.max_cycles = 150;
+            o.max_cycles = 60;
             const auto r = LineContactSolver(p, o).try_solve();
             const double U_sum = d.viscosity * (d.u1 + d.u2) / (d.reduced_modulus * d.reduced_radius);
             const double H = r.h_dpdx0 / d.reduced_radius / std::sqrt(U_sum);
@@ -352,7 +352,7 @@ const RegisterSection ehl_section(SectionSpec{
       report.notes.push_back({section, fmt::format(
           "**Where the steady solver converges (issue 3).** The FAS solver (641 nodes, W(2,2) cycles, "
           "under-relaxation 0.3/0.1, the fine film injected into the coarse film equation) is held "
-          "to 1e-8 on the scaled complementarity residual and the force balance within 150 cycles. "
+          "to 1e-8 on the scaled complementarity residual and the force balance within 60 cycles. "
           "It converges on L ≤ 10 for every M of the table in 6–20 cycles, apart from M ≥ 300 at "
           "L = 0 where the residual stalls near 1e-6. At L ≥ 15 it converges for some M only: the "
           "coarse grids cannot hold the pressure spike (M = 20, L = 15 diverges), and W-cycles fall "
