@@ -298,6 +298,36 @@ TEST(Cli, EhlTransientRunsAndValidates) {
   fs::remove(out);
 }
 
+// Two positions on a coarse grid run through; bad input exits 2 naming the key.
+TEST(Cli, OilFilmStiffnessRunsAndValidates) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/oil_film_stiffness_spur.json");
+  auto small = json::parse(in);
+  small["positions"] = 2;
+  small["grid"] = {{"levels", 3}};
+  const auto o = run_gearbench("run " + write_case("oil_film_small", small.dump()));
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  ASSERT_EQ(r["points"]["oil_film_stiffness_N_per_m"].size(), 2u);
+  for (const auto& k : r["points"]["oil_film_stiffness_N_per_m"]) EXPECT_GT(k.get<double>(), 0.0);
+  for (const auto& f : r["points"]["film_compliance_share"]) {
+    EXPECT_GT(f.get<double>(), 0.0);
+    EXPECT_LT(f.get<double>(), 1.0);
+  }
+  const std::pair<std::string, std::string> bad[] = {
+      {R"("perturbation": 0.5)", "perturbation = 0.5: allowed"},
+      {R"("positions": 0)", "positions = 0: allowed range is [1, 10000]"},
+      {R"("load_sharing": "stiffness")", "load_sharing"},
+  };
+  int n = 0;
+  for (const auto& [patch, expected] : bad) {
+    auto j = small;
+    j.merge_patch(json::parse("{" + patch + "}"));
+    const auto b = run_gearbench("run " + write_case("oil_film_bad_" + std::to_string(n++), j.dump()));
+    EXPECT_EQ(b.exit_code, 2) << patch << "\n" << b.err;
+    EXPECT_NE(b.err.find(expected), std::string::npos) << b.err;
+  }
+}
+
 /// Starts gearbench with `args`, sends SIGINT after `delay`, and returns its exit status.
 int interrupt_gearbench(const std::vector<std::string>& args, std::chrono::milliseconds delay) {
   const pid_t pid = ::fork();

@@ -14,33 +14,6 @@ namespace {
 
 using nlohmann::json;
 
-/// E′ = 2/((1−ν1²)/E1 + (1−ν2²)/E2).
-double reduced_modulus(const std::array<model::Material, 2>& m) {
-  return 2.0 / ((1.0 - m[0].poisson_ratio * m[0].poisson_ratio) / m[0].youngs_modulus +
-                (1.0 - m[1].poisson_ratio * m[1].poisson_ratio) / m[1].youngs_modulus);
-}
-
-/// The lubricant and solids of the contact; radius, load and speeds come from the mesh.
-ehl::LineContactData read_contact_fluid(model::ObjectReader& root, const model::GearCase& c) {
-  if (!c.materials) throw InputError("materials: missing required key (kind ehl_transient)");
-  if (!c.lubricant) throw InputError("lubricant: missing required key (kind ehl_transient)");
-  ehl::LineContactData d;
-  d.reduced_modulus = reduced_modulus(*c.materials);
-  d.viscosity = c.lubricant->viscosity;
-  d.pressure_viscosity = c.lubricant->pressure_viscosity;
-  d.roelands_z = c.lubricant->roelands_z.value_or(0.0);
-  if (root.has("rheology")) {
-    auto r = root.object("rheology");
-    if (r.optional_string("viscosity_model", {"roelands", "barus"}).value_or("roelands") == "barus")
-      d.viscosity_model = ehl::ViscosityModel::barus;
-    if (r.optional_string("density_model", {"dowson_higginson", "incompressible"}).value_or("dowson_higginson") ==
-        "incompressible")
-      d.density_model = ehl::DensityModel::incompressible;
-    r.finish();
-  }
-  return d;
-}
-
 json step_series(const ehl::TransientMeshResult& r) {
   json s = {{"time_s", json::array()}, {"position_m", json::array()}, {"roll_angle_rad", json::array()},
             {"reduced_radius_m", json::array()}, {"entrainment_m_per_s", json::array()},
@@ -95,7 +68,7 @@ json run_ehl_transient(const json& case_json) {
   root.optional_string("description");
   const auto gear_case = model::read_gear_case(root);
   if (!gear_case.operating) throw InputError("operating: missing required key (kind ehl_transient)");
-  const auto fluid = read_contact_fluid(root, gear_case);
+  const auto fluid = read_gear_fluid(root, gear_case, "ehl_transient");
   ehl::TransientMeshOptions options;
   options.steps = root.optional_integer("time_steps", 4, 100000).value_or(options.steps);
   options.load_sharing = root.optional_string("load_sharing", {"equal", "iso"}).value_or(options.load_sharing);
