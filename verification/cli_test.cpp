@@ -306,10 +306,10 @@ TEST(Cli, EfficiencyRunsAndValidates) {
   EXPECT_LT(r["efficiency_mean"].get<double>(), 1.0);
   EXPECT_GT(r["efficiency_min"].get<double>(), 0.9);
   auto bad = j;
-  bad["friction"]["model"] = "xu_kahraman";
+  bad["friction"] = {{"model", "xu_kahraman"}};  // needs the lubricant (and materials) sections
   const auto e = run_gearbench("run " + write_case("efficiency_bad", bad.dump()));
   EXPECT_EQ(e.exit_code, 2);
-  EXPECT_NE(e.err.find("friction.model = \"xu_kahraman\": allowed values are constant"), std::string::npos) << e.err;
+  EXPECT_NE(e.err.find("lubricant: missing, needed for friction.model = xu_kahraman"), std::string::npos) << e.err;
   auto helical = j;
   helical["gear_pair"]["helix_angle_deg"] = 15;
   helical["load_sharing"] = "iso";
