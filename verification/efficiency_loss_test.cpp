@@ -9,6 +9,7 @@
 
 #include "dynamics/spur6_dynamics.h"
 #include "efficiency/dynamic_efficiency.h"
+#include "efficiency/efficiency_sweep.h"
 #include "efficiency/mesh_loss.h"
 #include "support/test_support.h"
 
@@ -118,6 +119,29 @@ TEST(MeshLoss, LawsNeedTheirData) {
             std::string::npos);
   o.friction_model = FrictionModel::ehl;
   EXPECT_NE(testing_support::input_error_of([&] { MeshLoss(g, d.op, o, seed004_media()); }).find("\"ehl\""),
+            std::string::npos);
+}
+
+// A sweep reports one progress line per point, changes only its own parameter (the base
+// point appears in every block with the same figures), and rejects an empty or odd spec.
+TEST(EfficiencySweep, OneParameterAtATime) {
+  const auto d = seed004_drive(false, 1000, 100);
+  MeshLossOptions o;
+  o.friction_model = FrictionModel::xu_kahraman;
+  o.positions = 20;
+  std::vector<std::string> lines;
+  const efficiency::SweepSpec spec{{50, 100}, {1000, 2000}, {20, 25}};
+  const auto rows = efficiency::efficiency_sweep(d.pair, d.op, o, seed004_media(), spec,
+                                                 [&](const std::string& l) { lines.push_back(l); });
+  ASSERT_EQ(rows.size(), 6u);
+  EXPECT_EQ(lines.size(), 6u);
+  EXPECT_EQ(lines.front(), "efficiency sweep 1/6: torque_Nm = 50");
+  EXPECT_DOUBLE_EQ(rows[1].efficiency_mean, rows[2].efficiency_mean);  // 100 N·m, 1000 rpm, 25° twice
+  EXPECT_DOUBLE_EQ(rows[1].efficiency_mean, rows[5].efficiency_mean);
+  EXPECT_NE(rows[0].efficiency_mean, rows[1].efficiency_mean);
+  EXPECT_NE(testing_support::input_error_of([&] {
+              (void)efficiency::efficiency_sweep(d.pair, d.op, o, seed004_media(), {{}, {}, {5.0}});
+            }).find("sweep.pressure_angle_deg = 5"),
             std::string::npos);
 }
 
