@@ -24,7 +24,7 @@ efficiency::MeshLossOptions read_options(model::ObjectReader& root) {
   efficiency::MeshLossOptions options;
   if (root.has("friction")) {
     auto f = root.object("friction");
-    const auto name = f.optional_string("model", {"constant", "xu_kahraman", "benedict_kelley", "iso14179", "mixed"})
+    const auto name = f.optional_string("model", {"constant", "xu_kahraman", "benedict_kelley", "iso14179", "mixed", "ehl"})
                           .value_or("constant");
     options.friction_model = lubricant::parse_friction_model(name, "friction.model");
     const auto mu = f.optional_number("mu", model::Range::closed(0.0, 0.5));
