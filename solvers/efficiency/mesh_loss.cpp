@@ -184,11 +184,8 @@ ContactLoss MeshLoss::helical_loss(double s0) const {
     const double dy = (y_hi - y_lo) / n;
     for (int k = 0; k < n; ++k) total += point_loss(front - (y_lo + (k + 0.5) * dy) * tan_bb, load_per_length, dy / cos_bb);
   }
-  if (geometry_.pair().herringbone) {  // the second half mirrors the first
-    const double mu_sum = total.mu;
-    total += total;
-    total.mu = 2.0 * mu_sum;
-  }
+  if (geometry_.pair().herringbone)  // the second half mirrors the first
+    for (double* sum : {&total.sliding, &total.rolling, &total.unit_sliding, &total.force, &total.mu}) *sum *= 2.0;
   return total;
 }
 

@@ -143,6 +143,28 @@ const RegisterCheck stiffness_sharing(CheckSpec{
       return CheckValue{r.loss_factor_numeric, reference::ohlendorf_loss_factor(c.pair).H_V};
     }});
 
+// ISO/TR 14179-2's mesh loss P_VZP = μ_mZ·H_V·P_in, both factors from the reference's own
+// geometry, against the production integration with the ISO coefficient, equal sharing and
+// no rolling loss: a constant μ over an exact integral, so rounding only (1e-9 relative). It
+// checks the production's pitch-point force, sum velocity and reduced radius.
+const RegisterCheck iso14179_loss(CheckSpec{
+    .id = "efficiency.iso14179_loss.seed004", .section = section, .solver = solver,
+    .reference = "ISO/TR 14179-2: μ_mZ·H_V·P_in (closed form)",
+    .quantity = "mean sliding loss, spur 22/32, 100 N·m, 1000 rpm, Ra 0.4 µm", .unit = "W",
+    .tolerance = {0, 1e-9}, .justification = "the same closed-form coefficient and an exact integral: rounding only",
+    .tier = Tier::fast, .run = [](const CheckContext& ctx) {
+      auto c = load_case(ctx, "seed004_spur_geometry.json");
+      const auto media = media_for(ctx, "seed004_spur_geometry.json", c);
+      const geometry::GearPairGeometry g(c.pair);
+      MeshLossOptions o;
+      o.friction_model = lubricant::FrictionModel::iso14179;
+      o.rolling_loss_constant = 0.0;
+      const auto r = MeshLoss(g, c.operating, o, media).solve();
+      const double mu = reference::iso14179_mean_coefficient(c.pair, c.operating, *media.lubricant);
+      const double reference_loss = mu * reference::ohlendorf_loss_factor(c.pair).H_V * r.input_power;
+      return CheckValue{r.sliding_loss_mean, reference_loss, {{"mu_mZ", mu}}};
+    }});
+
 // Seed 000 eq. 13 with the normal pressure angle of the pair (18.334°, from the printed
 // transverse 20°); the paper prints 98.9 %.
 const RegisterCheck agma(CheckSpec{
