@@ -41,9 +41,11 @@ void XuKahramanInputs::validate() const {
   require_roughness_um(roughness_um, 10.0, "xu_kahraman.roughness");
 }
 
+// S is an rms roughness (REFERENCE-FACTS, after the public port): the mean of the flanks' Rq,
+// from their mean Ra by the Gaussian ratio Rq/Ra = √(π/2).
 XuKahramanInputs XuKahramanInputs::from_si(const ContactState& c) {
   return {c.hertz_pressure * 1e-9, c.slide_to_roll(), c.entrainment(), c.viscosity * 1e3, c.reduced_radius,
-          c.roughness_Ra / um};
+          std::sqrt(M_PI / 2.0) * c.roughness_Ra / um};
 }
 
 double xu_kahraman(const XuKahramanInputs& in) {

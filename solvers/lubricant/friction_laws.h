@@ -31,7 +31,7 @@ struct XuKahramanInputs {
   double entrainment_m_s = 0.0;      ///< V_e = (u1 + u2)/2 [m/s]
   double viscosity_cP = 0.0;         ///< ν0, absolute (dynamic) viscosity [cP = mPa·s]
   double radius_m = 0.0;             ///< R, effective radius of curvature [m]
-  double roughness_um = 0.0;         ///< S, composite surface roughness [µm]
+  double roughness_um = 0.0;         ///< S, rms surface roughness [µm] (from_si: mean Rq of the flanks)
 
   /// InputError when a value lies outside what the unit system allows (e.g. P_h given in
   /// Pa or MPa, ν0 in Pa·s, R in mm, S in m).

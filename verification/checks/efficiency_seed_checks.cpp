@@ -87,7 +87,7 @@ const RegisterCheck seed004_min(CheckSpec{
                          {"sliding_loss_mean_W", r.sliding_loss_mean}, {"rolling_loss_mean_W", r.rolling_loss_mean},
                          {"h_min_m", r.film_min}}};
     },
-    .recorded = 98.1154, .recorded_tolerance = 1e-4});
+    .recorded = 97.9278, .recorded_tolerance = 1e-4});
 
 const RegisterCheck seed004_max(CheckSpec{
     .id = "seed004.efficiency_max", .section = seed_section, .solver = solver, .reference = "seed 004 (99.8 %)",
@@ -166,7 +166,7 @@ const RegisterCheck seed000_static(CheckSpec{
                          {"loss_factor_numeric", r.loss_factor_numeric},
                          {"ohlendorf_HV", reference::ohlendorf_loss_factor(c.pair).H_V}}};
     },
-    .recorded = 99.1862, .recorded_tolerance = 1e-4});
+    .recorded = 99.1162, .recorded_tolerance = 1e-4});
 
 // --- Report ---------------------------------------------------------------------------------
 
@@ -268,8 +268,9 @@ const RegisterSection efficiency_section(SectionSpec{
                                 {{"mixed friction", scaled(r0.mesh_position, 180.0 / M_PI), scaled(r0.efficiency, 100.0)}}});
       report.notes.push_back({seed_section, fmt::format(
           "**Seed 004.** Friction by the Xu–Kahraman regression (itself a fit to thermal non-Newtonian EHL, the "
-          "nearest to the seed's thermal-EHL mean), equal sharing, Dowson–Higginson film, rolling loss of eq. 9 "
-          "with C_r = 6.2e8 Pa. Not printed by the seed and assumed: ν 0.3, Ra 0.4 µm. By law at 100 N·m, "
+          "nearest to the seed's thermal-EHL mean; its S is the flanks' mean rms roughness, √(π/2)·Ra), equal "
+          "sharing, Dowson–Higginson film, rolling loss of eq. 9 with C_r = 6.2e8 Pa. Not printed by the seed "
+          "and assumed: ν 0.3, Ra 0.4 µm. By law at 100 N·m, "
           "1000 rpm:\n\n| law | mean μ | η min [%] | η mean [%] | η max [%] | sliding [W] | rolling [W] |\n"
           "|---|---|---|---|---|---|---|\n{}\n"
           "The shape is reproduced: lowest efficiency in the engagement double contact, highest at the pitch "
@@ -284,7 +285,10 @@ const RegisterSection efficiency_section(SectionSpec{
           "**Seed 000.** Mixed friction (eq. 8) with the Xu–Kahraman full-film coefficient, μ_BL = 0.1, "
           "Zhou–Hoeprich fluid share from λ = h_min/σ; sliding loss only, as eq. 11; uniform load per unit "
           "contact-line length. Assumed: E 206 GPa, α 22/GPa, Ra 0.4 µm. Static mean {:.3f} % against 99.1 %; "
-          "mean μ {:.4f}; H_VL {:.4f} against Ohlendorf's {:.4f}. The seed's dynamic mean (98.8 %) needs the "
+          "mean μ {:.4f}; H_VL {:.4f} against Ohlendorf's {:.4f}. The agreement rests on the assumed roughness, "
+          "which the seed does not print: Ra 0.2 / 0.4 / 0.8 µm give 99.35 / 99.12 / 98.34 %, and taking the "
+          "regression's S as the mean Ra instead of the mean rms roughness gives 99.19 %. It shows the model "
+          "lands in the seed's range, not that it is validated. The seed's dynamic mean (98.8 %) needs the "
           "herringbone dynamics; efficiency::dynamic_efficiency takes any mesh-force series (tested with the "
           "6-DOF spur model).",
           laws, 100 * r0.efficiency_mean, r0.friction_coefficient_mean, r0.loss_factor_numeric,
