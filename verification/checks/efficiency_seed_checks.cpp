@@ -265,8 +265,8 @@ const RegisterSection efficiency_section(SectionSpec{
       report.notes.push_back({section, fmt::format(
           "Closed-form comparison, constant μ = 0.05, equal sharing. H_VL is the numeric loss factor (mean "
           "sliding loss over μ·P_in); for spur gears it equals Ohlendorf's H_V, the same integral. For helical "
-          "and herringbone gears the load per unit contact-line length is uniform, and the two differ (the "
-          "15–18 % of REFERENCE-FACTS).\n\n"
+          "and herringbone gears the load per unit contact-line length is uniform, and the two differ (+19–20 % "
+          "here; REFERENCE-FACTS quotes 15–18 % from a public audit of other pairs).\n\n"
           "| pair | H_VL (numeric) | H_V (Ohlendorf) | difference | mean η [%] |\n|---|---|---|---|---|\n{}", closed)});
 
       std::vector<reports::Series> curves;
