@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include "model/errors.h"
-#include "model/materials.h"
 
 namespace gearbench::app {
 
@@ -56,24 +55,11 @@ nlohmann::json finite_vector(const std::vector<double>& v, double scale) {
   return out;
 }
 
-namespace {
-/// E′ = 2/((1−ν1²)/E1 + (1−ν2²)/E2).
-double reduced_modulus(const std::array<model::Material, 2>& m) {
-  return 2.0 / ((1.0 - m[0].poisson_ratio * m[0].poisson_ratio) / m[0].youngs_modulus +
-                (1.0 - m[1].poisson_ratio * m[1].poisson_ratio) / m[1].youngs_modulus);
-}
-
-}  // namespace
-
 /// The lubricant and solids of the contact; radius, load and speeds come from the mesh.
 ehl::LineContactData read_gear_fluid(model::ObjectReader& root, const model::GearCase& c, const std::string& kind) {
   if (!c.materials) throw InputError("materials: missing required key (kind " + kind + ")");
   if (!c.lubricant) throw InputError("lubricant: missing required key (kind " + kind + ")");
-  ehl::LineContactData d;
-  d.reduced_modulus = reduced_modulus(*c.materials);
-  d.viscosity = c.lubricant->viscosity;
-  d.pressure_viscosity = c.lubricant->pressure_viscosity;
-  d.roelands_z = c.lubricant->roelands_z.value_or(0.0);
+  auto d = ehl::LineContactData::from_gear_media(*c.materials, *c.lubricant);
   if (root.has("rheology")) {
     auto r = root.object("rheology");
     if (r.optional_string("viscosity_model", {"roelands", "barus"}).value_or("roelands") == "barus")

@@ -4,11 +4,6 @@
 
 namespace gearbench::efficiency {
 
-double reduced_modulus(const std::array<model::Material, 2>& m) {
-  return 2.0 / ((1.0 - m[0].poisson_ratio * m[0].poisson_ratio) / m[0].youngs_modulus +
-                (1.0 - m[1].poisson_ratio * m[1].poisson_ratio) / m[1].youngs_modulus);
-}
-
 double hertz_line_pressure(double load_per_length, double reduced_radius, double e_reduced) {
   return std::sqrt(load_per_length * e_reduced / (2.0 * M_PI * reduced_radius));
 }

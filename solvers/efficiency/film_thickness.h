@@ -7,11 +7,8 @@
 
 namespace gearbench::efficiency {
 
-/// E′ = 2/((1 − ν1²)/E1 + (1 − ν2²)/E2) [Pa] (Dowson & Higginson's reduced modulus).
-double reduced_modulus(const std::array<model::Material, 2>& materials);
-
 /// Maximum Hertz pressure of a line contact, p_h = √(w·E′/(2πR)) [Pa] (Johnson, Contact
-/// Mechanics, 1985, §4.3, with E′ as above).
+/// Mechanics, 1985, §4.3, with E′ = model::reduced_modulus).
 double hertz_line_pressure(double load_per_length, double reduced_radius, double reduced_modulus);
 
 /// Dowson–Higginson minimum film of an isothermal line contact (Dowson & Higginson,

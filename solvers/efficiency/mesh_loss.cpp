@@ -86,7 +86,7 @@ MeshLoss::MeshLoss(const geometry::GearPairGeometry& geometry, const model::Oper
   } else {
     sharing_ = geometry::make_load_sharing(options_.load_sharing, "load_sharing");
   }
-  if (media_.materials) reduced_modulus_ = reduced_modulus(*media_.materials);
+  if (media_.materials) reduced_modulus_ = model::reduced_modulus(*media_.materials);
   cos_alpha_wt_ = std::cos(geometry_.working_pressure_angle());
   if (options_.friction_model == FrictionModel::iso14179) iso_mu_ = iso14179_coefficient();
 }

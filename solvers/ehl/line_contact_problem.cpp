@@ -40,6 +40,16 @@ LineContactData LineContactData::from_moes(double M, double L) {
   return d;
 }
 
+LineContactData LineContactData::from_gear_media(const std::array<model::Material, 2>& materials,
+                                                 const model::Lubricant& lubricant) {
+  LineContactData d;
+  d.reduced_modulus = model::reduced_modulus(materials);
+  d.viscosity = lubricant.viscosity;
+  d.pressure_viscosity = lubricant.pressure_viscosity;
+  d.roelands_z = lubricant.roelands_z.value_or(0.0);
+  return d;
+}
+
 LineContactProblem::LineContactProblem(const LineContactData& data) : data_(data) {
   const double R = data.reduced_radius;
   const double w = data.load_per_length;

@@ -8,6 +8,7 @@
 // the contact is elastic (Moes M ≥ 3). Below that the Hertz width no longer measures the
 // pressure zone, and the rigid-isoviscous length ℓ = √(2R·h_M) with Martin's film
 // h_M = 4.8950·η0ūR/w and p_r = w/ℓ is used (F = 1, λ = 6/4.8950, D → 0 for rigid solids).
+#include <array>
 #include <string>
 
 #include "model/materials.h"
@@ -38,6 +39,10 @@ struct LineContactData {
   /// Dimensional data with the given Moes M and L (Barus, incompressible): R = 0.01 m,
   /// E′ = 2.2e11 Pa, η0 = 0.04 Pa·s, u1 = u2 fixed; w and α chosen to meet M and L.
   static LineContactData from_moes(double M, double L);
+  /// The lubricant and solids of a gear pair (E′ from the materials; η0, α, z from the
+  /// lubricant; Roelands, Dowson–Higginson); radius, load and speeds are left for the mesh.
+  static LineContactData from_gear_media(const std::array<model::Material, 2>& materials,
+                                         const model::Lubricant& lubricant);
 };
 
 /// The dimensionless problem derived from the data.

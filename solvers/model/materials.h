@@ -11,6 +11,13 @@ struct Material {
   double density = 0.0;         ///< [kg/m³]
 };
 
+/// E′ = 2/((1 − ν1²)/E1 + (1 − ν2²)/E2) [Pa], the plane-strain modulus of two bodies in
+/// contact (Johnson, Contact Mechanics, 1985, §4.2; Dowson & Higginson's reduced modulus).
+inline double reduced_modulus(const std::array<Material, 2>& m) {
+  return 2.0 / ((1.0 - m[0].poisson_ratio * m[0].poisson_ratio) / m[0].youngs_modulus +
+                (1.0 - m[1].poisson_ratio * m[1].poisson_ratio) / m[1].youngs_modulus);
+}
+
 struct OperatingPoint {
   double pinion_speed = 0.0;         ///< ω1 [rad/s]
   double pinion_torque = 0.0;        ///< T1 [N·m]

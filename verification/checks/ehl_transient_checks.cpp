@@ -24,14 +24,9 @@ struct Seed004 {
 };
 
 Seed004 seed004(const CheckContext& ctx) {
-  Seed004 s{ctx.gear_case("seed004_transient_ehl.json"), {}};
-  const auto& m = *s.gear_case.materials;
-  s.fluid.reduced_modulus = 2.0 / ((1.0 - m[0].poisson_ratio * m[0].poisson_ratio) / m[0].youngs_modulus +
-                                   (1.0 - m[1].poisson_ratio * m[1].poisson_ratio) / m[1].youngs_modulus);
-  s.fluid.viscosity = s.gear_case.lubricant->viscosity;
-  s.fluid.pressure_viscosity = s.gear_case.lubricant->pressure_viscosity;
-  s.fluid.roelands_z = s.gear_case.lubricant->roelands_z.value_or(0.0);
-  return s;
+  auto c = ctx.gear_case("seed004_transient_ehl.json");
+  const auto fluid = LineContactData::from_gear_media(*c.materials, *c.lubricant);
+  return {std::move(c), fluid};
 }
 
 TransientMeshResult run_seed004(const CheckContext& ctx, int steps, int levels, double tolerance = 1e-6) {

@@ -18,16 +18,7 @@ const std::string section = "Oil-film stiffness along the path of contact";
 const std::string solver = "ehl.oil_film_stiffness";
 const std::string case_file = "oil_film_stiffness_spur.json";
 
-LineContactData fluid(const model::GearCase& c) {
-  const auto& m = *c.materials;
-  LineContactData d;
-  d.reduced_modulus = 2.0 / ((1.0 - m[0].poisson_ratio * m[0].poisson_ratio) / m[0].youngs_modulus +
-                             (1.0 - m[1].poisson_ratio * m[1].poisson_ratio) / m[1].youngs_modulus);
-  d.viscosity = c.lubricant->viscosity;
-  d.pressure_viscosity = c.lubricant->pressure_viscosity;
-  d.roelands_z = c.lubricant->roelands_z.value_or(0.0);
-  return d;
-}
+LineContactData fluid(const model::GearCase& c) { return LineContactData::from_gear_media(*c.materials, *c.lubricant); }
 
 /// The middle of the path (single contact, near the pitch point) with the case's data, the
 /// torque and speed scaled, and the given perturbation.
