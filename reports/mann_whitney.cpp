@@ -78,7 +78,7 @@ double u_statistic(const std::vector<double>& x, const std::vector<double>& y) {
   return u_from_ranks(mid_ranks(x, y), x.size());
 }
 
-UTestResult mann_whitney_u(const std::vector<double>& x, const std::vector<double>& y) {
+UTestResult mann_whitney_u(const std::vector<double>& x, const std::vector<double>& y, UTestMethod method) {
   if (x.size() < utest_min_repetitions || y.size() < utest_min_repetitions)
     throw std::invalid_argument("Mann-Whitney U test needs at least 2 values in each sample");
   UTestResult r;
@@ -90,8 +90,12 @@ UTestResult mann_whitney_u(const std::vector<double>& x, const std::vector<doubl
   r.u2 = n1 * n2 - r.u1;
   const double u = std::max(r.u1, r.u2);  // two-sided: twice the upper tail of the larger U
   // scipy's _mwu_choose_method: exact when a sample has ≤ 8 values and nothing is tied.
-  r.exact = std::min(r.n1, r.n2) <= 8 && ranks.tie_term == 0.0 &&
-            binomial(r.n1 + r.n2, std::min(r.n1, r.n2)) < 9.0e15;
+  // Counts are exact in doubles below 2^53 ≈ 9.0e15 arrangements.
+  const bool representable = binomial(r.n1 + r.n2, std::min(r.n1, r.n2)) < 9.0e15;
+  r.exact = method == UTestMethod::exact ? representable
+            : method == UTestMethod::asymptotic
+                ? false
+                : std::min(r.n1, r.n2) <= 8 && ranks.tie_term == 0.0 && representable;
   double p;
   if (r.exact) {
     p = 2.0 * exact_survival(u, r.n1, r.n2);

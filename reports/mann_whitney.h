@@ -20,14 +20,18 @@ constexpr std::size_t utest_min_repetitions = 2;
 /// compare.py warns that results are unreliable below this many repetitions.
 constexpr std::size_t utest_optimal_repetitions = 9;
 
+/// How the p-value is computed; `automatic` is scipy's (and so compare.py's) choice.
+enum class UTestMethod { automatic, exact, asymptotic };
+
 /// U of the first sample from mid-ranks of the pooled samples (Mann & Whitney 1947;
 /// scipy's "method 2": U1 = R1 − n1(n1+1)/2).
 double u_statistic(const std::vector<double>& x, const std::vector<double>& y);
 
-/// Two-sided test. Exact (Gaussian binomial coefficients) when one sample has at most 8
-/// values and there are no ties, as scipy's method='auto'; otherwise the normal
-/// approximation with tie and continuity correction. Throws std::invalid_argument when a
-/// sample has fewer than utest_min_repetitions values.
-UTestResult mann_whitney_u(const std::vector<double>& x, const std::vector<double>& y);
+/// Two-sided test. `automatic`: exact (Gaussian binomial coefficients) when one sample has
+/// at most 8 values and there are no ties, as scipy's method='auto'; otherwise the normal
+/// approximation with tie and continuity correction. `exact` ignores ties, as scipy does.
+/// Throws std::invalid_argument when a sample has fewer than utest_min_repetitions values.
+UTestResult mann_whitney_u(const std::vector<double>& x, const std::vector<double>& y,
+                           UTestMethod method = UTestMethod::automatic);
 
 }  // namespace gearbench::reports

@@ -227,7 +227,10 @@ std::vector<const PerfChange*> PerfHistory::latest_regressions() const {
 
 namespace {
 std::string describe(const PerfChange& c, const std::vector<PerfRun>& runs) {
-  auto value = [&](double v) { return c.ratio ? fmt::format("{:.4g}", v) : fmt::format("{:.4g} s", v); };
+  const auto [unit, scale] = time_unit(std::max(c.median_before, c.median_after));
+  auto value = [&](double v) {
+    return c.ratio ? fmt::format("{:.4g}", v) : fmt::format("{:.4g} {}", v * scale, unit);
+  };
   return fmt::format("| `{}` | {} | {} → {} | {} → {} | {:+.1f} % | {} | {} |\n", c.name,
                      c.ratio ? "ratio" : "time", runs[c.before].commit_label(), runs[c.after].commit_label(),
                      value(c.median_before), value(c.median_after), 100.0 * c.change,
