@@ -8,6 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "mann_whitney.h"
@@ -208,6 +209,51 @@ TEST(Provenance, HardwareFingerprintIsStableAndRecorded) {
   const auto p = provenance();
   EXPECT_EQ(p["machine"]["hardware_fingerprint"], hardware_fingerprint());
   EXPECT_GT(p["machine"]["memory_GiB"].get<long>(), 0);
+}
+
+int run_gearbench(const std::string& args, const std::filesystem::path& log) {
+  const std::string command = std::string("'") + GEARBENCH_EXE + "' " + args + " >'" + log.string() + "' 2>&1";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(PerfCli, ReportPerfFlagsTheNewestRegressionAndWritesFigures) {
+  namespace fs = std::filesystem;
+  const auto dir = fs::temp_directory_path() / ("gb_perf_cli_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "records");
+  std::ofstream(dir / "records" / "a.json")
+      << record("aaa", "2026-11-01T00:00:00Z", "A", {{"BM_S", reps(1.0)}, {"BM_S_baseline", reps(2.0)}}).dump();
+  std::ofstream(dir / "records" / "b.json")
+      << record("bbb", "2026-11-02T00:00:00Z", "A", {{"BM_S", reps(1.5)}, {"BM_S_baseline", reps(2.0)}}).dump();
+  const std::string args = "report perf --dir '" + (dir / "records").string() + "' --out '" + (dir / "out").string() + "'";
+  EXPECT_EQ(run_gearbench(args, dir / "log"), 1) << slurp(dir / "log");  // +50 %: exit 1
+  EXPECT_NE(slurp(dir / "log").find("REGRESSION time BM_S: +50.0 %"), std::string::npos) << slurp(dir / "log");
+  for (const char* f : {"perf.md", "perf.json", "figures/time_BM_S.csv", "figures/ratio_BM_S.csv"})
+    EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
+  // A looser threshold lets the same history pass.
+  EXPECT_EQ(run_gearbench(args + " --threshold 0.6", dir / "log"), 0) << slurp(dir / "log");
+  EXPECT_EQ(run_gearbench("report perf --dir '" + (dir / "nothing").string() + "'", dir / "log"), 2);
+  fs::remove_all(dir);
+}
+
+TEST(PerfCli, ReportPdfDrawsEveryFigureOfAReport) {
+  namespace fs = std::filesystem;
+  const auto dir = fs::temp_directory_path() / ("gb_pdf_cli_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  Report r;
+  r.tier = "fast";
+  r.figures.push_back({"line", "s", "a line", "x [m]", "y [Pa]", {{"l", {0.0, 1.0, 2.0}, {1.0, 2.0, 1.5}}}});
+  std::ofstream(dir / "report.json") << to_json(r).dump();
+  EXPECT_EQ(run_gearbench("report pdf '" + dir.string() + "'", dir / "log"), 0) << slurp(dir / "log");
+  EXPECT_EQ(slurp(dir / "figures" / "line.pdf").substr(0, 5), "%PDF-");
+  fs::remove_all(dir);
 }
 
 }  // namespace
