@@ -1,6 +1,10 @@
 #include "sweep_command.h"
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <cmath>
+#include <exception>
 #include <cstdlib>
 #include <filesystem>
 #include <fmt/format.h>
@@ -372,6 +376,23 @@ std::string describe_values(const SweepSpec& spec, std::size_t index) {
   return s;
 }
 
+/// Writes the table, JSON and figures; returns the number of failed cases.
+long write_sweep_output(const SweepSpec& spec, const std::vector<SweepRow>& rows, const std::string& out_dir,
+                        bool pdf, int ranks) {
+  const fs::path out =
+      out_dir.empty() ? fs::path(build::source_dir()) / "reports" / "out" / "sweep" / spec.name : fs::path(out_dir);
+  fs::create_directories(out / "figures");
+  write_text(out / "sweep.csv", sweep_csv(spec, rows));
+  const json table = sweep_json(spec, rows, ranks);
+  write_text(out / "sweep.json", table.dump(2) + "\n");
+  for (const auto& f : sweep_figures(spec, rows)) reports::write_figure(f, (out / "figures" / f.id).string(), pdf);
+  const long failed = table["summary"]["failed"].get<long>();
+  std::cerr << fmt::format("sweep {}: {} of {} cases ran, {} failed (recorded in the table)\n", spec.name,
+                           rows.size() - static_cast<std::size_t>(failed), rows.size(), failed);
+  std::cout << out.string() << "\n";
+  return failed;
+}
+
 }  // namespace
 
 int sweep_command(const std::string& sweep_path, const std::string& out_dir, bool pdf) {
@@ -390,21 +411,21 @@ int sweep_command(const std::string& sweep_path, const std::string& out_dir, boo
     mine.push_back(std::move(row));
   }
   const auto rows = mpi.gather(mine);
-  long failed = 0;
+  // Rank 0 writes; every rank learns how it went, so that none waits for a rank that failed.
+  long status = 0;  // number of failed cases, or −1 when the output could not be written
+  std::exception_ptr error;
   if (mpi.rank() == 0) {
-    const fs::path out =
-        out_dir.empty() ? fs::path(build::source_dir()) / "reports" / "out" / "sweep" / spec.name : fs::path(out_dir);
-    fs::create_directories(out / "figures");
-    write_text(out / "sweep.csv", sweep_csv(spec, rows));
-    const json table = sweep_json(spec, rows, mpi.size());
-    write_text(out / "sweep.json", table.dump(2) + "\n");
-    for (const auto& f : sweep_figures(spec, rows)) reports::write_figure(f, (out / "figures" / f.id).string(), pdf);
-    failed = table["summary"]["failed"].get<long>();
-    std::cerr << fmt::format("sweep {}: {} of {} cases ran, {} failed (recorded in the table)\n", spec.name,
-                             n - static_cast<std::size_t>(failed), n, failed);
-    std::cout << out.string() << "\n";
+    try {
+      status = write_sweep_output(spec, rows, out_dir, pdf, mpi.size());
+    } catch (...) {
+      error = std::current_exception();
+      status = -1;
+    }
   }
-  return mpi.broadcast(failed) == 0 ? exit_ok : exit_failed;
+  status = mpi.broadcast(status);
+  if (error) std::rethrow_exception(error);
+  if (status < 0) throw std::runtime_error("rank 0 could not write the sweep output");
+  return status == 0 ? exit_ok : exit_failed;
 }
 
 }  // namespace gearbench::app

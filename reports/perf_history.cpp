@@ -1,6 +1,7 @@
 #include "perf_history.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
@@ -61,17 +62,17 @@ PerfRun parse_perf_record(const json& record, const std::string& file) {
   if (!record.is_object() || !record.contains("benchmarks") || !record.contains("gearbench"))
     throw InputError(fmt::format("{}: not a gearbench bench record (no benchmarks/gearbench keys)", file));
   const json& g = record["gearbench"];
+  const json code = g.value("code", json::object()), m = g.value("machine", json::object());
   PerfRun run;
   run.file = file;
-  run.sha = g["code"].value("git_sha", "unknown");
-  run.dirty = g["code"].value("dirty", false);
+  run.sha = code.value("git_sha", "unknown");
+  run.dirty = code.value("dirty", false);
   const std::string created = text_or(g, "created_utc", "");
-  run.order_key = text_or(g["code"], "commit_time_utc", created) + "|" + created;
-  const json& m = g["machine"];
+  run.order_key = text_or(code, "commit_time_utc", created) + "|" + created;
   run.fingerprint = text_or(m, "hardware_fingerprint", text_or(m, "fingerprint", "unknown"));
   run.machine = fmt::format("{}, {} cores{}", text_or(m, "cpu_model", "unknown CPU"), m.value("cores", 0u),
                             m.contains("memory_GiB") ? fmt::format(", {} GiB", m["memory_GiB"].dump()) : "");
-  run.build_type = g["build"].value("build_type", "unknown");
+  run.build_type = g.value("build", json::object()).value("build_type", "unknown");
   for (const auto& b : record["benchmarks"]) {
     if (b.value("run_type", "iteration") != "iteration") continue;  // aggregates are recomputed
     const double t = b.at("real_time").get<double>() * unit_seconds(b.value("time_unit", "ns"), file);

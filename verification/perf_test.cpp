@@ -242,6 +242,14 @@ TEST(PerfCli, ReportPerfFlagsTheNewestRegressionAndWritesFigures) {
   fs::remove_all(dir);
 }
 
+TEST(PerfCli, BenchRejectsBadRepetitionsBeforeRunningAnything) {
+  const auto log = std::filesystem::temp_directory_path() / ("gb_bench_bad_" + std::to_string(::getpid()));
+  EXPECT_EQ(run_gearbench("bench --record --repetitions 0 --out '" + log.string() + "_dir'", log), 2);
+  EXPECT_NE(slurp(log).find("--repetitions = 0"), std::string::npos) << slurp(log);
+  EXPECT_FALSE(std::filesystem::exists(log.string() + "_dir"));
+  std::filesystem::remove(log);
+}
+
 TEST(PerfCli, ReportPdfDrawsEveryFigureOfAReport) {
   namespace fs = std::filesystem;
   const auto dir = fs::temp_directory_path() / ("gb_pdf_cli_" + std::to_string(::getpid()));
