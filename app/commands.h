@@ -34,6 +34,7 @@ struct PerfReportRequest {
   std::string out_dir;
   double alpha = 0.05;
   double threshold = 0.05;
+  std::string clock = "cpu";  ///< "cpu" or "real": which benchmark time is compared
   bool pdf = false;
 };
 int report_perf_command(const PerfReportRequest& request);

@@ -49,6 +49,8 @@ int main(int argc, char** argv) {
   perf->add_option("--alpha", perf_request.alpha, "significance level of the U test")->capture_default_str();
   perf->add_option("--threshold", perf_request.threshold,
                    "relative change of the median below which nothing is flagged")->capture_default_str();
+  perf->add_option("--clock", perf_request.clock, "compare CPU time (default) or real (wall-clock) time")
+      ->check(CLI::IsMember({"cpu", "real"}))->capture_default_str();
   perf->add_flag("--pdf", perf_request.pdf, "also draw the figures as PDF");
   std::string pdf_report;
   auto* pdf = report->add_subcommand("pdf", "draw a report's figures as PDF (for publications)");

@@ -33,9 +33,10 @@ void write_text(const fs::path& path, const std::string& text) {
 }  // namespace
 
 int report_perf_command(const PerfReportRequest& request) {
-  const reports::PerfOptions options{.alpha = request.alpha, .threshold = request.threshold};
+  const reports::PerfOptions options{.alpha = request.alpha, .threshold = request.threshold,
+                                     .clock = reports::parse_perf_clock(request.clock)};
   options.validate();
-  auto runs = reports::load_perf_records(request.dir);
+  auto runs = reports::load_perf_records(request.dir, options.clock);
   if (runs.empty()) throw InputError(fmt::format("--dir {}: no benchmark records (*.json) in it", request.dir));
   const auto history = reports::analyse_perf_history(std::move(runs), options);
   const fs::path out(request.out_dir);

@@ -58,7 +58,13 @@ std::string text_or(const json& j, const char* key, const std::string& fallback)
 
 }  // namespace
 
-PerfRun parse_perf_record(const json& record, const std::string& file) {
+PerfClock parse_perf_clock(const std::string& name) {
+  if (name == "cpu") return PerfClock::cpu;
+  if (name == "real") return PerfClock::real;
+  throw InputError(fmt::format("--clock = {}: expected cpu or real", name));
+}
+
+PerfRun parse_perf_record(const json& record, const std::string& file, PerfClock clock) {
   if (!record.is_object() || !record.contains("benchmarks") || !record.contains("gearbench"))
     throw InputError(fmt::format("{}: not a gearbench bench record (no benchmarks/gearbench keys)", file));
   const json& g = record["gearbench"];
@@ -75,7 +81,8 @@ PerfRun parse_perf_record(const json& record, const std::string& file) {
   run.build_type = g.value("build", json::object()).value("build_type", "unknown");
   for (const auto& b : record["benchmarks"]) {
     if (b.value("run_type", "iteration") != "iteration") continue;  // aggregates are recomputed
-    const double t = b.at("real_time").get<double>() * unit_seconds(b.value("time_unit", "ns"), file);
+    const char* key = clock == PerfClock::cpu ? "cpu_time" : "real_time";
+    const double t = b.at(key).get<double>() * unit_seconds(b.value("time_unit", "ns"), file);
     run.seconds[b.at("run_name").get<std::string>()].push_back(t);
   }
   if (record.contains("ratios"))
@@ -86,14 +93,14 @@ PerfRun parse_perf_record(const json& record, const std::string& file) {
   return run;
 }
 
-std::vector<PerfRun> load_perf_records(const std::string& dir) {
+std::vector<PerfRun> load_perf_records(const std::string& dir, PerfClock clock) {
   if (!fs::is_directory(dir)) throw InputError(fmt::format("--dir {}: not a directory", dir));
   std::vector<PerfRun> runs;
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(dir))
     if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
-  for (const auto& f : files) runs.push_back(parse_perf_record(model::read_json_file(f.string()), f.string()));
+  for (const auto& f : files) runs.push_back(parse_perf_record(model::read_json_file(f.string()), f.string(), clock));
   return runs;
 }
 
@@ -140,7 +147,9 @@ std::string figure_id(const std::string& prefix, const std::string& name) {
   return id;
 }
 
-std::vector<Figure> history_figures(const std::vector<PerfRun>& runs) {
+std::string clock_name(PerfClock clock) { return clock == PerfClock::cpu ? "CPU" : "real"; }
+
+std::vector<Figure> history_figures(const std::vector<PerfRun>& runs, PerfClock clock) {
   std::vector<std::string> commits;  // distinct, in order
   std::vector<double> x_of_run;
   for (const auto& r : runs) {
@@ -169,7 +178,8 @@ std::vector<Figure> history_figures(const std::vector<PerfRun>& runs) {
     Figure f{.id = figure_id(ratio ? "ratio_" : "time_", name), .section = "Performance history",
              .title = ratio ? name + " over its baseline" : name,
              .xlabel = "commit",
-             .ylabel = ratio ? "median time ratio solver/baseline [-]" : fmt::format("median real time [{}]", unit)};
+             .ylabel = ratio ? fmt::format("median {} time ratio solver/baseline [-]", clock_name(clock))
+                           : fmt::format("median {} time [{}]", clock_name(clock), unit)};
     for (auto& [fp, s] : by_machine) {
       for (double& y : s.y) y *= scale;
       f.series.push_back(std::move(s));
@@ -207,7 +217,7 @@ PerfHistory analyse_perf_history(std::vector<PerfRun> runs, const PerfOptions& o
           h.changes.push_back(compare_samples(name, true, any_machine, j, before, now.ratio_samples(name), options));
       }
   }
-  h.figures = history_figures(runs);
+  h.figures = history_figures(runs, options.clock);
   h.runs = std::move(runs);
   return h;
 }
@@ -245,12 +255,12 @@ constexpr const char* change_header =
 std::string PerfHistory::markdown(const PerfOptions& options) const {
   std::string md = "# gearbench performance history\n\n";
   md += fmt::format(
-      "{} benchmark records in commit order. Times are compared only between runs on the same "
+      "{} benchmark records in commit order; {} time per iteration. Times are compared only between runs on the same "
       "hardware (fingerprint of CPU model, cores and memory) and build type; solver/baseline ratios "
       "across machines. A change is flagged when the two-sided Mann–Whitney U test over the "
       "repetitions gives p < {} and the median moved by more than {:.0f} %; runs with fewer than {} "
       "repetitions are not tested.\n\n",
-      runs.size(), options.alpha, 100.0 * options.threshold, utest_min_repetitions);
+      runs.size(), clock_name(options.clock), options.alpha, 100.0 * options.threshold, utest_min_repetitions);
   md += "| # | commit | record | machine | fingerprint | build |\n|---|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < runs.size(); ++i)
     md += fmt::format("| {} | `{}` | {} | {} | `{}` | {} |\n", i, runs[i].commit_label(),
@@ -272,7 +282,8 @@ std::string PerfHistory::markdown(const PerfOptions& options) const {
 }
 
 json PerfHistory::to_json(const PerfOptions& options) const {
-  json j{{"alpha", options.alpha}, {"threshold", options.threshold}};
+  json j{{"alpha", options.alpha}, {"threshold", options.threshold},
+         {"clock", options.clock == PerfClock::cpu ? "cpu" : "real"}};
   j["runs"] = json::array();
   for (const auto& r : runs)
     j["runs"].push_back({{"file", r.file}, {"commit", r.sha}, {"dirty", r.dirty}, {"machine", r.machine},

@@ -185,6 +185,14 @@ TEST(PerfHistory, SingleRepetitionsAreNotTested) {
   EXPECT_TRUE(h.latest_regressions().empty());
 }
 
+TEST(PerfHistory, ClockSelectsCpuOrRealTime) {
+  json r = record("aaa", "2026-11-01T00:00:00Z", "A", {{"BM_X", {1.0, 1.0}}});
+  for (auto& b : r["benchmarks"]) b["cpu_time"] = 0.5;  // ms, as real_time
+  EXPECT_DOUBLE_EQ(parse_perf_record(r, "a.json").seconds["BM_X"][0], 0.5e-3);  // CPU by default
+  EXPECT_DOUBLE_EQ(parse_perf_record(r, "a.json", PerfClock::real).seconds["BM_X"][0], 1.0e-3);
+  EXPECT_THROW(parse_perf_clock("wall"), gearbench::InputError);
+}
+
 TEST(PerfHistory, RejectsWhatIsNotARecordAndBadOptions) {
   EXPECT_THROW(parse_perf_record(json{{"benchmarks", json::array()}}, "x.json"), gearbench::InputError);
   EXPECT_THROW(analyse_perf_history({}, {.alpha = 1.5}), gearbench::InputError);
