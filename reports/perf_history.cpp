@@ -100,7 +100,12 @@ std::vector<PerfRun> load_perf_records(const std::string& dir, PerfClock clock) 
   for (const auto& entry : fs::directory_iterator(dir))
     if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
-  for (const auto& f : files) runs.push_back(parse_perf_record(model::read_json_file(f.string()), f.string(), clock));
+  for (const auto& f : files) {
+    const json j = model::read_json_file(f.string());
+    // Other JSON beside the records (a report.json in a milestone folder) is not a record.
+    if (j.is_object() && j.contains("benchmarks") && j.contains("gearbench"))
+      runs.push_back(parse_perf_record(j, f.string(), clock));
+  }
   return runs;
 }
 

@@ -71,7 +71,7 @@ struct PerfHistory {
 
 /// Reads one record (InputError when it is not a `gearbench bench` record).
 PerfRun parse_perf_record(const nlohmann::json& record, const std::string& file, PerfClock clock = PerfClock::cpu);
-/// Every *.json record in `dir`, in commit order.
+/// Every *.json `gearbench bench` record in `dir` (other JSON files are passed over).
 std::vector<PerfRun> load_perf_records(const std::string& dir, PerfClock clock = PerfClock::cpu);
 /// Sorts the runs into commit order, compares and draws.
 PerfHistory analyse_perf_history(std::vector<PerfRun> runs, const PerfOptions& options);

@@ -239,6 +239,7 @@ TEST(PerfCli, ReportPerfFlagsTheNewestRegressionAndWritesFigures) {
       << record("aaa", "2026-11-01T00:00:00Z", "A", {{"BM_S", reps(1.0)}, {"BM_S_baseline", reps(2.0)}}).dump();
   std::ofstream(dir / "records" / "b.json")
       << record("bbb", "2026-11-02T00:00:00Z", "A", {{"BM_S", reps(1.5)}, {"BM_S_baseline", reps(2.0)}}).dump();
+  std::ofstream(dir / "records" / "report.json") << json{{"schema_version", 1}}.dump();  // not a record: passed over
   const std::string args = "report perf --dir '" + (dir / "records").string() + "' --out '" + (dir / "out").string() + "'";
   EXPECT_EQ(run_gearbench(args, dir / "log"), 1) << slurp(dir / "log");  // +50 %: exit 1
   EXPECT_NE(slurp(dir / "log").find("REGRESSION time BM_S: +50.0 %"), std::string::npos) << slurp(dir / "log");
