@@ -18,6 +18,7 @@
 
 #include "build_info.h"
 #include "commands.h"
+#include "interrupt.h"
 #include "model/errors.h"
 #include "model/json_reader.h"
 #include "perf_history.h"
@@ -126,9 +127,12 @@ int bench_command(const BenchRequest& request) {
   record["ratios"] = side_by_side_ratios(record["benchmarks"]);
   const auto name = reports::report_folder_name();
   const auto target = free_path(request.out_dir, request.record ? name : "bench_" + name);
-  const auto temp = fs::path(target.string() + ".tmp");
-  std::ofstream(temp) << record.dump(2) << "\n";
-  fs::rename(temp, target);
+  {
+    const DeferInterrupts defer;  // the record appears whole or not at all
+    const auto temp = fs::path(target.string() + ".tmp");
+    std::ofstream(temp) << record.dump(2) << "\n";
+    fs::rename(temp, target);
+  }
   for (const auto& [run, r] : record["ratios"].items())
     std::cerr << fmt::format("{}: {:.3g} x baseline\n", run, r["ratio"].get<double>());
   std::cout << target.string() << "\n";

@@ -5,6 +5,7 @@
 
 #include "build_info.h"
 #include "commands.h"
+#include "interrupt.h"
 #include "model/errors.h"
 
 namespace {
@@ -76,6 +77,7 @@ int main(int argc, char** argv) {
   sweep->add_option("--out", sweep_out, "output folder (default reports/out/sweep/<sweep name>)");
   sweep->add_flag("--pdf", sweep_pdf, "also draw the figures as PDF");
 
+  install_interrupt_handler();
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

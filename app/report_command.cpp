@@ -7,6 +7,7 @@
 #include "build_info.h"
 #include "commands.h"
 #include "compare.h"
+#include "interrupt.h"
 #include "model/errors.h"
 #include "perf_history.h"
 
@@ -40,6 +41,7 @@ int report_perf_command(const PerfReportRequest& request) {
   if (runs.empty()) throw InputError(fmt::format("--dir {}: no benchmark records (*.json) in it", request.dir));
   const auto history = reports::analyse_perf_history(std::move(runs), options);
   const fs::path out(request.out_dir);
+  const DeferInterrupts defer;  // perf.md, perf.json and the figures are written as one
   fs::create_directories(out / "figures");
   write_text(out / "perf.json", history.to_json(options).dump(2) + "\n");
   write_text(out / "perf.md", history.markdown(options));
@@ -57,6 +59,7 @@ int report_perf_command(const PerfReportRequest& request) {
 int report_pdf_command(const std::string& report_dir) {
   const auto report = reports::load_report(report_dir);
   const fs::path folder = fs::is_directory(report_dir) ? fs::path(report_dir) : fs::path(report_dir).parent_path();
+  const DeferInterrupts defer;  // no half-drawn PDF is left behind
   fs::create_directories(folder / "figures");
   int drawn = 0, failed = 0;
   for (const auto& f : report["figures"]) {

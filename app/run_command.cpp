@@ -1,12 +1,15 @@
 #include <chrono>
 #include <condition_variable>
+#include <cstdio>
 #include <fmt/format.h>
-#include <mutex>
-#include <thread>
 #include <fstream>
 #include <iostream>
+#include <mutex>
+#include <thread>
+#include <unistd.h>
 
 #include "commands.h"
+#include "interrupt.h"
 #include "kind_registry.h"
 #include "model/errors.h"
 #include "model/json_reader.h"
@@ -19,11 +22,23 @@ void write_output(const std::string& text, const std::string& output_path) {
     std::cout << text;
     return;
   }
-  std::ofstream out(output_path);
-  if (!out) throw InputError(fmt::format("-o {}: cannot write the output file", output_path));
-  out << text;
-  out.flush();
-  if (!out) throw std::runtime_error(fmt::format("-o {}: writing the output failed", output_path));
+  // A temporary file next to the target, then a rename: -o never holds half a result.
+  const DeferInterrupts defer;
+  const std::string temp = output_path + ".tmp-" + std::to_string(::getpid());
+  {
+    std::ofstream out(temp);
+    if (!out) throw InputError(fmt::format("-o {}: cannot write the output file", output_path));
+    out << text;
+    out.flush();
+    if (!out) {
+      std::remove(temp.c_str());
+      throw std::runtime_error(fmt::format("-o {}: writing the output failed", output_path));
+    }
+  }
+  if (std::rename(temp.c_str(), output_path.c_str()) != 0) {
+    std::remove(temp.c_str());
+    throw std::runtime_error(fmt::format("-o {}: writing the output failed", output_path));
+  }
 }
 }  // namespace
 

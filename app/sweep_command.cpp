@@ -15,6 +15,7 @@
 
 #include "build_info.h"
 #include "commands.h"
+#include "interrupt.h"
 #include "kind_registry.h"
 #include "model/errors.h"
 #include "model/json_reader.h"
@@ -416,6 +417,7 @@ int sweep_command(const std::string& sweep_path, const std::string& out_dir, boo
   std::exception_ptr error;
   if (mpi.rank() == 0) {
     try {
+      const DeferInterrupts defer;  // the table, JSON and figures are written as one
       status = write_sweep_output(spec, rows, out_dir, pdf, mpi.size());
     } catch (...) {
       error = std::current_exception();

@@ -7,6 +7,7 @@
 #include "model/json_reader.h"
 #include "check_registry.h"
 #include "commands.h"
+#include "interrupt.h"
 #include "model/errors.h"
 
 namespace gearbench::app {
@@ -23,7 +24,10 @@ int verify_command(const std::string& tier, const std::string& out_dir, const st
   auto report = verification::run_verification(
       parsed, context, [](const std::string& line) { std::cerr << line << std::endl; });
   if (!bench_record.empty()) report.notes.push_back(reports::benchmark_note(model::read_json_file(bench_record)));
-  const std::string folder = reports::write_report(report, out_dir);
+  const std::string folder = [&] {
+    const DeferInterrupts defer;  // the report folder appears whole or not at all
+    return reports::write_report(report, out_dir);
+  }();
   std::cerr << fmt::format("{} of {} checks pass\n", report.checks.size() - report.failures(),
                            report.checks.size());
   std::cout << folder << "/report.md\n";

@@ -3,12 +3,16 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
+#include <vector>
 
 namespace {
 
@@ -120,9 +124,9 @@ const BadCase bad_cases[] = {
     {"undercut", [](json& j) { j["gear_pair"]["teeth"] = {8, 32}; },
      "gear_pair.teeth[0] = 8: undercut by the generating rack"},
     {"module_nonpositive", [](json& j) { j["gear_pair"]["normal_module_mm"] = -2; },
-     "gear_pair.normal_module_mm = -2: allowed range is (0, 1000] mm"},
+     "gear_pair.normal_module_mm = -2: allowed range is [0.01, 1000] mm"},
     {"face_width_zero", [](json& j) { j["gear_pair"]["face_width_mm"] = 0; },
-     "gear_pair.face_width_mm = 0: allowed range is (0, 100000] mm"},
+     "gear_pair.face_width_mm = 0: allowed range is [0.01, 100000] mm"},
     {"speed_negative", [](json& j) { j["operating"]["pinion_speed_rpm"] = -1000; },
      "operating.pinion_speed_rpm = -1000: allowed range is (0, 1000000] rpm"},
     {"pressure_angle", [](json& j) { j["gear_pair"]["normal_pressure_angle_deg"] = 9.5; },
@@ -246,6 +250,118 @@ TEST(Cli, EhlLineBadInput) {
   }
 }
 
+// A short march (8 steps, 161 nodes) runs through; bad input exits 2 naming the key; a step
+// that cannot converge exits 3 with the steps so far in -o.
+TEST(Cli, EhlTransientRunsAndValidates) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed004_transient_ehl.json");
+  const auto seed = json::parse(in);
+  auto small = seed;
+  small["time_steps"] = 8;
+  small["grid"] = {{"levels", 3}};
+  const auto o = run_gearbench("run " + write_case("ehl_transient_small", small.dump()));
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  EXPECT_EQ(r["steps"]["h_min_m"].size(), 9u);
+  for (const char* point : {"A", "B", "C", "D", "E"}) EXPECT_TRUE(r["profiles"].contains(point)) << point;
+  EXPECT_GT(r["p_max_Pa"].get<double>(), r["reference"]["hertz_pressure_Pa"].get<double>() * 0.8);
+
+  const std::pair<std::string, std::string> bad[] = {
+      {R"("time_steps": 2)", "time_steps = 2: allowed range is [4, 100000]"},
+      {R"("load_sharing": "stiffness")", "load_sharing"},
+      {R"("gear_pair": {"teeth": [22, 32], "normal_module_mm": 2.0, "normal_pressure_angle_deg": 25.0,
+          "face_width_mm": 20.0, "helix_angle_deg": 15})", "the pair is helical"},
+      {R"("rheology": {"viscosity_model": "eyring"})", "rheology.viscosity_model"},
+  };
+  int n = 0;
+  for (const auto& [patch, expected] : bad) {
+    auto j = small;
+    j.merge_patch(json::parse("{" + patch + "}"));
+    const auto b = run_gearbench("run " + write_case("ehl_transient_bad_" + std::to_string(n++), j.dump()));
+    EXPECT_EQ(b.exit_code, 2) << patch << "\n" << b.err;
+    EXPECT_NE(b.err.find(expected), std::string::npos) << b.err;
+  }
+  auto no_oil = small;
+  no_oil.erase("lubricant");
+  const auto b = run_gearbench("run " + write_case("ehl_transient_no_oil", no_oil.dump()));
+  EXPECT_EQ(b.exit_code, 2);
+  EXPECT_NE(b.err.find("lubricant: missing required key"), std::string::npos) << b.err;
+
+  auto stuck = small;
+  stuck["grid"]["max_cycles"] = 1;
+  const auto out = temp_path("ehl_transient_unconverged.json").string();
+  const auto failed = run_gearbench("run " + write_case("ehl_transient_stuck", stuck.dump()) + " -o " + out);
+  EXPECT_EQ(failed.exit_code, 3) << failed.err;
+  EXPECT_NE(failed.err.find("did not converge"), std::string::npos) << failed.err;
+  std::ifstream diag(out);
+  const auto d = json::parse(diag);
+  EXPECT_FALSE(d["diagnostics"]["converged"].get<bool>());
+  fs::remove(out);
+}
+
+// Two positions on a coarse grid run through; bad input exits 2 naming the key.
+TEST(Cli, OilFilmStiffnessRunsAndValidates) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/oil_film_stiffness_spur.json");
+  auto small = json::parse(in);
+  small["positions"] = 2;
+  small["grid"] = {{"levels", 3}};
+  const auto o = run_gearbench("run " + write_case("oil_film_small", small.dump()));
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  ASSERT_EQ(r["points"]["oil_film_stiffness_N_per_m"].size(), 2u);
+  for (const auto& k : r["points"]["oil_film_stiffness_N_per_m"]) EXPECT_GT(k.get<double>(), 0.0);
+  for (const auto& f : r["points"]["film_compliance_share"]) {
+    EXPECT_GT(f.get<double>(), 0.0);
+    EXPECT_LT(f.get<double>(), 1.0);
+  }
+  const std::pair<std::string, std::string> bad[] = {
+      {R"("perturbation": 0.5)", "perturbation = 0.5: allowed"},
+      {R"("positions": 0)", "positions = 0: allowed range is [1, 10000]"},
+      {R"("load_sharing": "stiffness")", "load_sharing"},
+  };
+  int n = 0;
+  for (const auto& [patch, expected] : bad) {
+    auto j = small;
+    j.merge_patch(json::parse("{" + patch + "}"));
+    const auto b = run_gearbench("run " + write_case("oil_film_bad_" + std::to_string(n++), j.dump()));
+    EXPECT_EQ(b.exit_code, 2) << patch << "\n" << b.err;
+    EXPECT_NE(b.err.find(expected), std::string::npos) << b.err;
+  }
+}
+
+/// Starts gearbench with `args`, sends SIGINT after `delay`, and returns its exit status.
+int interrupt_gearbench(const std::vector<std::string>& args, std::chrono::milliseconds delay) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::vector<char*> argv{const_cast<char*>(GEARBENCH_EXE)};
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::freopen("/dev/null", "w", stdout);
+    ::freopen("/dev/null", "w", stderr);
+    ::execv(GEARBENCH_EXE, argv.data());
+    ::_exit(127);
+  }
+  std::this_thread::sleep_for(delay);
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Ctrl-C ends a run with exit code 130 and writes nothing: no result file, no report folder,
+// no temporary left behind.
+TEST(Cli, InterruptWritesNothing) {
+  const auto out = temp_path("interrupted_run.json");
+  EXPECT_EQ(interrupt_gearbench({"run", GEARBENCH_SOURCE_DIR "/cases/seed004_transient_ehl.json", "-o", out.string()},
+                                std::chrono::milliseconds(700)), 130);
+  EXPECT_FALSE(fs::exists(out));
+
+  const auto dir = temp_path("interrupted_verify");
+  fs::create_directories(dir);
+  EXPECT_EQ(interrupt_gearbench({"verify", "--out", dir.string()}, std::chrono::milliseconds(1500)), 130);
+  EXPECT_TRUE(fs::is_empty(dir)) << "an interrupted verify left files in " << dir;
+  fs::remove_all(dir);
+}
+
 TEST(Cli, DynamicsRunsAndValidates) {
   std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics.json");
   auto j = json::parse(in);
@@ -306,10 +422,10 @@ TEST(Cli, EfficiencyRunsAndValidates) {
   EXPECT_LT(r["efficiency_mean"].get<double>(), 1.0);
   EXPECT_GT(r["efficiency_min"].get<double>(), 0.9);
   auto bad = j;
-  bad["friction"]["model"] = "xu_kahraman";
+  bad["friction"] = {{"model", "xu_kahraman"}};  // needs the lubricant (and materials) sections
   const auto e = run_gearbench("run " + write_case("efficiency_bad", bad.dump()));
   EXPECT_EQ(e.exit_code, 2);
-  EXPECT_NE(e.err.find("friction.model = \"xu_kahraman\": allowed values are constant"), std::string::npos) << e.err;
+  EXPECT_NE(e.err.find("lubricant: missing, needed for friction.model = xu_kahraman"), std::string::npos) << e.err;
   auto helical = j;
   helical["gear_pair"]["helix_angle_deg"] = 15;
   helical["load_sharing"] = "iso";

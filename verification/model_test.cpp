@@ -61,7 +61,7 @@ TEST(ObjectReader, RangesAreNamed) {
   j = spur_pair();
   j["normal_module_mm"] = 0;
   EXPECT_EQ(input_error_of([&] { read_gear_pair(ObjectReader(j, "gear_pair")); }),
-            "gear_pair.normal_module_mm = 0: allowed range is (0, 1000] mm");
+            "gear_pair.normal_module_mm = 0: allowed range is [0.01, 1000] mm");
 }
 
 TEST(ObjectReader, MaterialsOneObjectOrPair) {

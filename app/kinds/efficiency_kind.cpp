@@ -1,9 +1,15 @@
-// Case kind "efficiency": sliding loss and mesh efficiency over one mesh period (constant μ
-// for now), with Ohlendorf's H_V and the AGMA 6011 figure beside it.
+// Case kind "efficiency": sliding and rolling loss and mesh efficiency over one mesh period
+// with a choice of friction law and load sharing, Ohlendorf's H_V and the AGMA 6011 figure
+// beside it.
 #include <cmath>
+#include <iostream>
+#include <fmt/format.h>
 #include <numbers>
+#include <optional>
+#include <vector>
 
 #include "closed_form/efficiency_closed_form.h"
+#include "efficiency/efficiency_sweep.h"
 #include "efficiency/mesh_loss.h"
 #include "kind_registry.h"
 #include "model/case_reader.h"
@@ -14,50 +20,125 @@ namespace {
 
 using nlohmann::json;
 
+efficiency::MeshLossOptions read_options(model::ObjectReader& root) {
+  efficiency::MeshLossOptions options;
+  if (root.has("friction")) {
+    auto f = root.object("friction");
+    const auto name = f.optional_string("model", {"constant", "xu_kahraman", "benedict_kelley", "iso14179", "mixed", "ehl"})
+                          .value_or("constant");
+    options.friction_model = lubricant::parse_friction_model(name, "friction.model");
+    const auto mu = f.optional_number("mu", model::Range::closed(0.0, 0.5));
+    const bool constant = options.friction_model == lubricant::FrictionModel::constant;
+    if (constant && !mu) throw InputError("friction.mu: missing, required for friction.model = constant");
+    if (!constant && mu)
+      throw InputError(fmt::format("friction.mu = {}: applies to friction.model = constant only (model is {})", *mu, name));
+    if (mu) options.friction_coefficient = *mu;
+    options.boundary_friction =
+        f.optional_number("mu_boundary", model::Range::closed(0.07, 0.15)).value_or(options.boundary_friction);
+    options.lubricant_factor =
+        f.optional_number("lubricant_factor", model::Range::closed(0.1, 2.0)).value_or(options.lubricant_factor);
+    f.finish();
+  }
+  options.load_sharing = root.optional_string("load_sharing", {"equal", "iso", "stiffness"}).value_or("equal");
+  options.rolling_loss_constant = root.optional_number("rolling_loss_constant_Pa", model::Range::closed(0.0, 1e11), "Pa")
+                                      .value_or(options.rolling_loss_constant);
+  options.positions = root.optional_integer("positions", 2, 1000000).value_or(options.positions);
+  options.points_per_line = root.optional_integer("points_per_line", 1, 100000).value_or(options.points_per_line);
+  return options;
+}
+
+std::optional<efficiency::SweepSpec> read_sweep(model::ObjectReader& root, const json& case_json) {
+  if (!root.has("sweep")) return std::nullopt;
+  root.accept("sweep");
+  const json& section = case_json.at("sweep");
+  if (!section.is_object()) throw InputError("sweep: an object expected");
+  model::ObjectReader s(section, "sweep");
+  efficiency::SweepSpec spec;
+  const auto list = [&](const char* key) {
+    std::vector<double> v;
+    if (!s.has(key)) return v;
+    s.accept(key);
+    const json& values = section.at(key);
+    if (!values.is_array()) throw InputError(fmt::format("sweep.{}: a list of numbers expected", key));
+    for (const auto& x : values) {
+      if (!x.is_number()) throw InputError(fmt::format("sweep.{}: a list of numbers expected", key));
+      v.push_back(x.get<double>());
+    }
+    return v;
+  };
+  spec.torques_Nm = list("torque_Nm");
+  spec.speeds_rpm = list("speed_rpm");
+  spec.pressure_angles_deg = list("pressure_angle_deg");
+  s.finish();
+  spec.validate();
+  return spec;
+}
+
+json sweep_json(const std::vector<efficiency::SweepRow>& rows) {
+  json out = json::array();
+  for (const auto& r : rows)
+    out.push_back({{"parameter", r.parameter}, {"value", r.value}, {"efficiency_mean", r.efficiency_mean},
+                   {"efficiency_min", r.efficiency_min}, {"efficiency_max", r.efficiency_max},
+                   {"sliding_loss_mean_W", r.sliding_loss_mean}, {"rolling_loss_mean_W", r.rolling_loss_mean},
+                   {"friction_coefficient_mean", r.friction_coefficient_mean},
+                   {"efficiency_min_at_path_fraction", r.min_at}, {"efficiency_max_at_path_fraction", r.max_at},
+                   {"pitch_point_at_path_fraction", r.pitch_at}});
+  return out;
+}
+
 json run_efficiency(const json& case_json) {
   model::ObjectReader root(case_json, "");
   root.string("kind");
   root.optional_string("description");
   const auto gear_case = model::read_gear_case(root);
   if (!gear_case.operating) throw InputError("operating: missing required key (kind efficiency)");
-  efficiency::MeshLossOptions options;
-  if (root.has("friction")) {
-    auto f = root.object("friction");
-    f.optional_string("model", {"constant"});  // the regression and EHL laws are still to come
-    options.friction_coefficient = f.number("mu", model::Range::closed(0.0, 0.5));
-    f.finish();
-  }
-  options.load_sharing = root.optional_string("load_sharing", {"equal", "iso"}).value_or("equal");
-  options.positions = root.optional_integer("positions", 2, 1000000).value_or(options.positions);
-  options.points_per_line = root.optional_integer("points_per_line", 1, 100000).value_or(options.points_per_line);
+  const auto options = read_options(root);
+  const auto sweep = read_sweep(root, case_json);
   root.finish();
 
   const geometry::GearPairGeometry geometry(gear_case.gear_pair);
-  const auto r = efficiency::MeshLoss(geometry, *gear_case.operating, options).solve();
+  const efficiency::MeshLoss solver(geometry, *gear_case.operating, options,
+                                    {gear_case.materials, gear_case.lubricant});
+  const auto r = solver.solve();
   const auto hv = reference::ohlendorf_loss_factor(gear_case.gear_pair);
   const double alpha_n_deg = gear_case.gear_pair.normal_pressure_angle * 180.0 / std::numbers::pi;
-  return {
+  json notes = json::array({"agma6011_efficiency uses the normal pressure angle in seed 000 eq. 13",
+                            "rolling loss (seed 004 eq. 9): P_r = C_r * h_min * u_mean * l * cos(alpha_wt), C_r = rolling_loss_constant_Pa"});
+  if (!r.rolling_loss_computed)
+    notes.push_back("no rolling loss: it needs the film thickness (materials and lubricant sections)");
+  json result = {
       {"kind", "efficiency"},
+      {"friction_model", lubricant::friction_model_name(options.friction_model)},
+      {"load_sharing", options.load_sharing},
       {"efficiency_mean", r.efficiency_mean},
       {"efficiency_min", r.efficiency_min},
       {"efficiency_max", r.efficiency_max},
-      {"power_loss_mean_W", r.sliding_loss_mean},
+      {"power_loss_mean_W", r.power_loss_mean},
       {"sliding_loss_mean_W", r.sliding_loss_mean},
+      {"rolling_loss_mean_W", r.rolling_loss_mean},
       {"input_power_W", r.input_power},
+      {"rolling_loss_constant_Pa", options.rolling_loss_constant},
       {"friction_coefficient_mean", r.friction_coefficient_mean},
       {"loss_factor_numeric", r.loss_factor_numeric},
       {"ohlendorf_HV", hv.H_V},
       {"agma6011_efficiency", reference::agma6011_efficiency(gear_case.gear_pair.teeth[0],
                                                              gear_case.gear_pair.teeth[1], alpha_n_deg)},
-      {"mesh_position_rad", r.mesh_position},
-      {"efficiency", r.efficiency},
-      {"sliding_loss_W", r.sliding_loss},
-      {"notes", json::array({"constant friction coefficient; no rolling loss yet (it needs the film thickness)",
-                             "agma6011_efficiency uses the normal pressure angle in seed 000 eq. 13"})},
+      {"h_min_m", r.film_min},
+      {"series", {{"mesh_position_rad", r.mesh_position},
+                  {"efficiency", r.efficiency},
+                  {"sliding_loss_W", r.sliding_loss},
+                  {"rolling_loss_W", r.rolling_loss},
+                  {"friction_coefficient", r.friction_coefficient}}},
+      {"notes", notes},
   };
+  if (sweep)
+    result["sweep"] = sweep_json(efficiency::efficiency_sweep(
+        gear_case.gear_pair, *gear_case.operating, options, {gear_case.materials, gear_case.lubricant}, *sweep,
+        [](const std::string& line) { std::cerr << "gearbench: " << line << std::endl; }));
+  return result;
 }
 
-const RegisterKind efficiency_kind({"efficiency", "sliding loss and mesh efficiency over a mesh period",
+const RegisterKind efficiency_kind({"efficiency", "mesh power loss and efficiency over a mesh period",
                                     run_efficiency});
 
 }  // namespace

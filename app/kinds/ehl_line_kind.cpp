@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "ehl/line_contact_solver.h"
+#include "ehl_sections.h"
 #include "kind_registry.h"
 #include "model/errors.h"
 #include "model/json_reader.h"
@@ -47,50 +48,6 @@ ehl::LineContactData read_moes(model::ObjectReader& root) {
   return ehl::LineContactData::from_moes(M, L);
 }
 
-ehl::EhlOptions read_grid(model::ObjectReader& root) {
-  ehl::EhlOptions o;
-  if (!root.has("grid")) return o;
-  auto g = root.object("grid");
-  o.levels = g.optional_integer("levels", 1, 14).value_or(o.levels);
-  o.coarsest_nodes = g.optional_integer("coarsest_nodes", 9, 100001).value_or(o.coarsest_nodes);
-  if (g.has("nodes") && (g.has("levels") || g.has("coarsest_nodes")))
-    throw InputError("grid.nodes: give either nodes or levels with coarsest_nodes, not both");
-  if (auto nodes = g.optional_integer("nodes", 9, 1 << 20)) {
-    // nodes − 1 = (coarsest − 1)·2^(levels − 1): as many levels as keep ≥ 32 coarse intervals.
-    int intervals = *nodes - 1, levels = 1;
-    while (intervals % 2 == 0 && intervals / 2 >= 32) {
-      intervals /= 2;
-      ++levels;
-    }
-    if (levels == 1 && *nodes > 257)
-      throw InputError(fmt::format("grid.nodes = {}: use (n0 − 1)·2^k + 1 nodes (e.g. 1281, 4097) so "
-                                   "that multigrid has coarser grids", *nodes));
-    o.levels = levels;
-    o.coarsest_nodes = intervals + 1;
-  }
-  if (auto x = g.optional_number("x_in", {-1e3, 0.0, false, true})) o.x_in = *x;
-  if (auto x = g.optional_number("x_out", {0.0, 1e3, true, false})) o.x_out = *x;
-  if ((o.x_in == 0.0) != (o.x_out == 0.0))
-    throw InputError("grid.x_in, grid.x_out: give both or neither");
-  o.cycle = g.optional_string("cycle", {"V", "W"}).value_or("W") == "V" ? ehl::CycleType::V : ehl::CycleType::W;
-  o.max_cycles = g.optional_integer("max_cycles", 1, 100000).value_or(o.max_cycles);
-  o.tolerance = g.optional_number("tolerance", {0.0, 1.0, true, true}).value_or(o.tolerance);
-  g.finish();
-  const long finest = static_cast<long>(o.coarsest_nodes - 1) * (1L << (o.levels - 1)) + 1;
-  if (finest > (1L << 20) + 1)
-    throw InputError(fmt::format("grid: levels = {} from coarsest_nodes = {} gives {} nodes; allowed is "
-                                 "at most 1048577 on the finest grid", o.levels, o.coarsest_nodes, finest));
-  return o;
-}
-
-/// Non-finite numbers become null: diagnostics of a failed solve may hold them.
-json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-json finite_vector(const std::vector<double>& v, double scale = 1.0) {
-  json out = json::array();
-  for (double x : v) out.push_back(finite_or_null(x * scale));
-  return out;
-}
-
 json result_json(const ehl::LineContactProblem& p, const ehl::EhlResult& r) {
   const auto& d = p.data();
   const double U_sum = d.viscosity * (d.u1 + d.u2) / (d.reduced_modulus * d.reduced_radius);
@@ -132,7 +89,7 @@ json run_ehl_line(const json& case_json) {
   if (moes && (root.has("contact") || root.has("lubricant")))
     throw InputError("moes: give either \"moes\" or \"contact\" + \"lubricant\", not both");
   auto data = moes ? read_moes(root) : read_dimensional(root);
-  const auto options = read_grid(root);
+  const auto options = read_ehl_grid(root);
   root.finish();
 
   const ehl::LineContactProblem problem(data);

@@ -69,6 +69,23 @@ double agma6011_efficiency(int z1, int z2, double pressure_angle_deg) {
   return 1.0 - (22.0 - 0.8 * pressure_angle_deg) * 0.02 * (z1 + z2) / (static_cast<double>(z1) * z2);
 }
 
+double iso14179_mean_coefficient(const model::GearPair& pair, const model::OperatingPoint& operating,
+                                 const model::Lubricant& lubricant, double lubricant_factor) {
+  const auto cf = involute_closed_form(pair);
+  const double at = cf.transverse_pressure_angle;
+  const double beta_b = std::atan(std::tan(pair.helix_angle) * std::cos(at));
+  const double rb1 = 0.5 * pair.teeth[0] * pair.normal_module / std::cos(pair.helix_angle) * std::cos(at);
+  const double rw1 = rb1 / std::cos(cf.working_pressure_angle);
+  const double b = pair.face_width * (pair.herringbone ? 2.0 : 1.0);
+  const double force_per_width = operating.pinion_torque / rb1 / (b * 1e3);                    // N/mm
+  const double v_sum = 2.0 * operating.pinion_speed * rw1 * std::sin(cf.working_pressure_angle);  // m/s
+  const double t1c = cf.pitch_point_from_T1, t2c = cf.line_of_action_length - t1c;
+  const double rho_red = t1c * t2c / (cf.line_of_action_length * std::cos(beta_b)) * 1e3;        // mm
+  const double ra = 0.5 * (operating.roughness_Ra[0] + operating.roughness_Ra[1]) * 1e6;         // µm
+  return 0.048 * std::pow(force_per_width / (v_sum * rho_red), 0.2) * std::pow(lubricant.viscosity * 1e3, -0.05) *
+         std::pow(ra, 0.25) * lubricant_factor;
+}
+
 double spur_loss_factor_quadrature(const model::GearPair& pair) {
   gsl_set_error_handler_off();
   Integrand data{path_of(pair)};

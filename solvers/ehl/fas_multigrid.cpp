@@ -31,6 +31,11 @@ struct Level {
   std::vector<double> X, P, H, W, eps, rho;
   std::vector<double> f;   ///< FAS right-hand side of the Reynolds equation
   std::vector<double> rho_h_old;  ///< ρ̄H of the previous time step (transient only)
+  /// FAS right-hand side of the film equation on a coarse grid: the injected fine film minus
+  /// the coarse film of the injected pressure, so that both grids start from the same film
+  /// (Venner & Lubrecht 2000, §6.4; without it the coarse film near the pressure spike
+  /// differs from the fine one and the coarse problem drives high-L cases to divergence).
+  std::vector<double> film_correction;
   double g = 0.0;          ///< FAS right-hand side of the force balance
   double seconds = 0.0;
 };
@@ -108,6 +113,7 @@ class FasMultigrid::Impl {
     for (std::size_t k = 1; k < levels_.size(); ++k) {
       interpolate_solution(*levels_[k - 1], *levels_[k]);
       levels_[k]->g = state_.load;
+      levels_[k]->film_correction.clear();
       std::fill(levels_[k]->f.begin(), levels_[k]->f.end(), 0.0);
       finest_ = k;
       for (int c = 0; c < 2; ++c) cycle(k);
@@ -134,10 +140,15 @@ class FasMultigrid::Impl {
 
   // --- state -------------------------------------------------------------------------
   void update_film(Level& l) {
-    l.deformation.apply(l.P, l.W);
+    if (o_.direct_deformation)
+      l.deformation.apply_direct(l.P, l.W);
+    else
+      l.deformation.apply(l.P, l.W);
     const double c = problem_.deformation_factor() / pi;
     const double kappa = state_.curvature;
     for (std::size_t i = 0; i < l.n; ++i) l.H[i] = H0_ + 0.5 * kappa * l.X[i] * l.X[i] - c * l.W[i];
+    if (!l.film_correction.empty())
+      for (std::size_t i = 0; i < l.n; ++i) l.H[i] += l.film_correction[i];
   }
 
   void update_coefficients(Level& l) {
@@ -286,8 +297,8 @@ class FasMultigrid::Impl {
     for (int s = 0; s < o_.post_sweeps; ++s) relax(fine);
   }
 
-  /// FAS coarse problem: injected pressure, f_c = L_c(P̄) + R·r (full weighting; no residual
-  /// where the fine pressure is cavitated), g_c = ∫P̄ + (g − ∫P).
+  /// FAS coarse problem: injected pressure and film, f_c = L_c(P̄) + R·r (full weighting; no
+  /// residual where the fine pressure is cavitated), g_c = ∫P̄ + (g − ∫P).
   void restrict_problem(Level& fine, Level& coarse) {
     update_film(fine);
     update_coefficients(fine);
@@ -295,7 +306,13 @@ class FasMultigrid::Impl {
     for (std::size_t i = 1; i + 1 < fine.n; ++i)
       r[i] = fine.P[i] > 0.0 ? fine.f[i] - operator_at(fine, i) : 0.0;
     for (std::size_t I = 0; I < coarse.n; ++I) coarse.P[I] = fine.P[2 * I];
+    coarse.film_correction.clear();
     update_film(coarse);
+    coarse.film_correction.resize(coarse.n);
+    for (std::size_t I = 0; I < coarse.n; ++I) {
+      coarse.film_correction[I] = fine.H[2 * I] - coarse.H[I];
+      coarse.H[I] = fine.H[2 * I];
+    }
     update_coefficients(coarse);
     std::fill(coarse.f.begin(), coarse.f.end(), 0.0);
     for (std::size_t I = 1; I + 1 < coarse.n; ++I)

@@ -18,12 +18,12 @@ GearPair read_gear_pair(ObjectReader s) {
   // Tooth counts: the undercut-free minimum depends on the shift and is checked by the
   // geometry; 5 is a hard floor for any involute gear.
   g.teeth = s.integer_pair("teeth", 5, 10000);
-  g.normal_module = s.number("normal_module_mm", Range::positive(1000.0), "mm") * mm;
+  g.normal_module = s.number("normal_module_mm", Range::closed(0.01, 1000.0), "mm") * mm;
   g.normal_pressure_angle =
       s.number("normal_pressure_angle_deg", Range::closed(10.0, 35.0), "deg") * deg;
   g.helix_angle = s.optional_number("helix_angle_deg", Range::closed(0.0, 45.0), "deg")
                       .value_or(0.0) * deg;
-  g.face_width = s.number("face_width_mm", Range::positive(1e5), "mm") * mm;
+  g.face_width = s.number("face_width_mm", Range::closed(0.01, 1e5), "mm") * mm;
   g.profile_shift =
       s.optional_number_pair("profile_shift", Range::closed(-1.0, 2.0)).value_or(
           std::array<double, 2>{0.0, 0.0});
@@ -50,7 +50,7 @@ GearPair read_gear_pair(ObjectReader s) {
 namespace {
 Material read_material(ObjectReader s) {
   Material m;
-  m.youngs_modulus = s.number("youngs_modulus_GPa", Range::positive(1e7), "GPa") * GPa;
+  m.youngs_modulus = s.number("youngs_modulus_GPa", Range::closed(1e-3, 1e4), "GPa") * GPa;
   m.poisson_ratio = s.number("poisson_ratio", Range::closed(0.0, 0.5));
   m.density = s.optional_number("density_kg_m3", Range::positive(1e5), "kg/m3").value_or(7850.0);
   s.finish();

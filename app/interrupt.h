@@ -1,0 +1,28 @@
+#pragma once
+// Ctrl-C (SIGINT) and SIGTERM end gearbench at once: one line on stderr and exit code 130.
+// Results reach disk only inside a DeferInterrupts scope (a temporary file or folder, then a
+// rename), where the signal waits until the scope ends, so an interrupted run never leaves a
+// half-written result or report, and never presents a partial one as complete.
+#include <csignal>
+
+namespace gearbench::app {
+
+/// Exit code of an interrupted run (128 + SIGINT, the shell's convention).
+inline constexpr int exit_interrupted = 130;
+
+void install_interrupt_handler();
+
+/// Holds SIGINT and SIGTERM back for its lifetime; a signal that arrived meanwhile ends the
+/// program when the scope closes.
+class DeferInterrupts {
+ public:
+  DeferInterrupts();
+  ~DeferInterrupts();
+  DeferInterrupts(const DeferInterrupts&) = delete;
+  DeferInterrupts& operator=(const DeferInterrupts&) = delete;
+
+ private:
+  sigset_t previous_{};
+};
+
+}  // namespace gearbench::app

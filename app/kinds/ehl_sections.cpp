@@ -1,0 +1,89 @@
+// The "grid" section of the EHL kinds and NaN-free JSON output.
+#include "ehl_sections.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "model/errors.h"
+#include "model/materials.h"
+
+namespace gearbench::app {
+
+using model::Range;
+
+ehl::EhlOptions read_ehl_grid(model::ObjectReader& root, ehl::EhlOptions defaults) {
+  ehl::EhlOptions o = defaults;
+  if (!root.has("grid")) return o;
+  auto g = root.object("grid");
+  o.levels = g.optional_integer("levels", 1, 14).value_or(o.levels);
+  o.coarsest_nodes = g.optional_integer("coarsest_nodes", 9, 100001).value_or(o.coarsest_nodes);
+  if (g.has("nodes") && (g.has("levels") || g.has("coarsest_nodes")))
+    throw InputError("grid.nodes: give either nodes or levels with coarsest_nodes, not both");
+  if (auto nodes = g.optional_integer("nodes", 9, 1 << 20)) {
+    // nodes − 1 = (coarsest − 1)·2^(levels − 1): as many levels as keep ≥ 32 coarse intervals.
+    int intervals = *nodes - 1, levels = 1;
+    while (intervals % 2 == 0 && intervals / 2 >= 32) {
+      intervals /= 2;
+      ++levels;
+    }
+    if (levels == 1 && *nodes > 257)
+      throw InputError(fmt::format("grid.nodes = {}: use (n0 − 1)·2^k + 1 nodes (e.g. 1281, 4097) so "
+                                   "that multigrid has coarser grids", *nodes));
+    o.levels = levels;
+    o.coarsest_nodes = intervals + 1;
+  }
+  if (auto x = g.optional_number("x_in", {-1e3, 0.0, false, true})) o.x_in = *x;
+  if (auto x = g.optional_number("x_out", {0.0, 1e3, true, false})) o.x_out = *x;
+  if ((o.x_in == 0.0) != (o.x_out == 0.0))
+    throw InputError("grid.x_in, grid.x_out: give both or neither");
+  if (auto cycle = g.optional_string("cycle", {"V", "W"}))
+    o.cycle = *cycle == "V" ? ehl::CycleType::V : ehl::CycleType::W;
+  o.max_cycles = g.optional_integer("max_cycles", 1, 100000).value_or(o.max_cycles);
+  o.tolerance = g.optional_number("tolerance", {0.0, 1.0, true, true}).value_or(o.tolerance);
+  g.finish();
+  const long finest = static_cast<long>(o.coarsest_nodes - 1) * (1L << (o.levels - 1)) + 1;
+  if (finest > (1L << 20) + 1)
+    throw InputError(fmt::format("grid: levels = {} from coarsest_nodes = {} gives {} nodes; allowed is "
+                                 "at most 1048577 on the finest grid", o.levels, o.coarsest_nodes, finest));
+  return o;
+}
+
+/// Non-finite numbers become null: diagnostics of a failed solve may hold them.
+nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+nlohmann::json finite_vector(const std::vector<double>& v, double scale) {
+  nlohmann::json out = nlohmann::json::array();
+  for (double x : v) out.push_back(finite_or_null(x * scale));
+  return out;
+}
+
+namespace {
+/// E′ = 2/((1−ν1²)/E1 + (1−ν2²)/E2).
+double reduced_modulus(const std::array<model::Material, 2>& m) {
+  return 2.0 / ((1.0 - m[0].poisson_ratio * m[0].poisson_ratio) / m[0].youngs_modulus +
+                (1.0 - m[1].poisson_ratio * m[1].poisson_ratio) / m[1].youngs_modulus);
+}
+
+}  // namespace
+
+/// The lubricant and solids of the contact; radius, load and speeds come from the mesh.
+ehl::LineContactData read_gear_fluid(model::ObjectReader& root, const model::GearCase& c, const std::string& kind) {
+  if (!c.materials) throw InputError("materials: missing required key (kind " + kind + ")");
+  if (!c.lubricant) throw InputError("lubricant: missing required key (kind " + kind + ")");
+  ehl::LineContactData d;
+  d.reduced_modulus = reduced_modulus(*c.materials);
+  d.viscosity = c.lubricant->viscosity;
+  d.pressure_viscosity = c.lubricant->pressure_viscosity;
+  d.roelands_z = c.lubricant->roelands_z.value_or(0.0);
+  if (root.has("rheology")) {
+    auto r = root.object("rheology");
+    if (r.optional_string("viscosity_model", {"roelands", "barus"}).value_or("roelands") == "barus")
+      d.viscosity_model = ehl::ViscosityModel::barus;
+    if (r.optional_string("density_model", {"dowson_higginson", "incompressible"}).value_or("dowson_higginson") ==
+        "incompressible")
+      d.density_model = ehl::DensityModel::incompressible;
+    r.finish();
+  }
+  return d;
+}
+
+}  // namespace gearbench::app

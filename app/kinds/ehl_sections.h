@@ -1,0 +1,28 @@
+#pragma once
+// Case sections shared by the EHL kinds: the multigrid "grid" options and JSON output that
+// never holds NaN (diagnostics of a failed solve may).
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "ehl/line_contact_solver.h"
+#include "model/case_reader.h"
+#include "model/json_reader.h"
+
+namespace gearbench::app {
+
+/// The optional "grid" section: {"nodes" | "levels" + "coarsest_nodes", "x_in", "x_out",
+/// "cycle", "max_cycles", "tolerance"} over the given defaults.
+ehl::EhlOptions read_ehl_grid(model::ObjectReader& root, ehl::EhlOptions defaults = {});
+
+/// A gear-pair case's contact fluid and solids for EHL along the mesh: E′ from "materials",
+/// η0, α and z from "lubricant", the optional "rheology": {"viscosity_model",
+/// "density_model"}. Radius, load and speeds are the mesh's; `kind` names the case kind in
+/// errors.
+ehl::LineContactData read_gear_fluid(model::ObjectReader& root, const model::GearCase& c, const std::string& kind);
+
+/// Non-finite numbers become null.
+nlohmann::json finite_or_null(double v);
+nlohmann::json finite_vector(const std::vector<double>& v, double scale = 1.0);
+
+}  // namespace gearbench::app

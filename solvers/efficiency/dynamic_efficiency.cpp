@@ -1,0 +1,99 @@
+#include "dynamic_efficiency.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <numeric>
+
+#include "model/errors.h"
+
+namespace gearbench::efficiency {
+
+void DynamicEfficiencyOptions::validate() const {
+  if (load_levels < 2 || load_levels > 100)
+    throw InputError(fmt::format("dynamic_efficiency.load_levels = {}: allowed range is [2, 100]", load_levels));
+  if (phases < 2 || phases > 100000)
+    throw InputError(fmt::format("dynamic_efficiency.phases = {}: allowed range is [2, 100000]", phases));
+}
+
+namespace {
+
+/// Total loss (sliding + rolling) over one mesh period on `phases` midpoints at one force.
+std::vector<double> loss_curve(const geometry::GearPairGeometry& g, model::OperatingPoint op,
+                               MeshLossOptions o, const MeshLossMedia& media, double normal_force, int phases) {
+  op.pinion_torque = normal_force * g.radii(0).base * std::cos(g.base_helix_angle());
+  o.positions = phases;
+  const auto r = MeshLoss(g, op, o, media).solve();
+  std::vector<double> loss(r.sliding_loss.size());
+  std::transform(r.sliding_loss.begin(), r.sliding_loss.end(), r.rolling_loss.begin(), loss.begin(), std::plus<>());
+  return loss;
+}
+
+/// Periodic linear interpolation of a curve given on the midpoints (k + ½)/n of [0, 1).
+double at_phase(const std::vector<double>& curve, double phase) {
+  const auto n = static_cast<double>(curve.size());
+  const double x = phase * n - 0.5;
+  const double k = std::floor(x);
+  const double w = x - k;
+  const auto wrap = [&](double i) { return static_cast<std::size_t>(std::fmod(std::fmod(i, n) + n, n)); };
+  return (1.0 - w) * curve[wrap(k)] + w * curve[wrap(k + 1.0)];
+}
+
+}  // namespace
+
+DynamicEfficiencyResult dynamic_efficiency(const geometry::GearPairGeometry& g, const model::OperatingPoint& nominal,
+                                           const MeshLossOptions& loss_options, const MeshLossMedia& media,
+                                           const std::vector<double>& time,
+                                           const std::vector<std::vector<double>>& mesh_forces,
+                                           double mesh_frequency, DynamicEfficiencyOptions options) {
+  options.validate();
+  if (g.pair().herringbone)
+    throw InputError("dynamic_efficiency: give one helical half of a herringbone pair and one force series per half");
+  if (mesh_forces.empty()) throw InputError("dynamic_efficiency: no mesh-force series");
+  for (const auto& f : mesh_forces)
+    if (f.size() != time.size())
+      throw InputError(fmt::format("dynamic_efficiency: a force series has {} samples for {} times", f.size(), time.size()));
+  if (!(mesh_frequency > 0.0))
+    throw InputError(fmt::format("dynamic_efficiency: mesh_frequency = {}: must be positive", mesh_frequency));
+
+  // Load levels: equally spaced over the positive forces of all meshes (seed 000: five).
+  double f_lo = HUGE_VAL, f_hi = 0.0;
+  for (const auto& series : mesh_forces)
+    for (const double f : series)
+      if (f > 0.0) f_lo = std::min(f_lo, f), f_hi = std::max(f_hi, f);
+  DynamicEfficiencyResult r;
+  r.time = time;
+  const double p_in = nominal.pinion_torque * nominal.pinion_speed;
+  const double f_nominal = nominal.pinion_torque / (g.radii(0).base * std::cos(g.base_helix_angle())) /
+                           static_cast<double>(mesh_forces.size());
+  const auto static_curve = loss_curve(g, nominal, loss_options, media, f_nominal, options.phases);
+  r.static_mean = 1.0 - static_cast<double>(mesh_forces.size()) *
+                            std::accumulate(static_curve.begin(), static_curve.end(), 0.0) /
+                            static_cast<double>(static_curve.size()) / p_in;
+  std::vector<std::vector<double>> curves;
+  if (f_hi > 0.0) {
+    if (f_hi - f_lo < 1e-12 * f_hi) f_lo = f_hi * (1.0 - 1e-9);  // a constant force: one curve suffices
+    for (int k = 0; k < options.load_levels; ++k) {
+      r.load_levels.push_back(f_lo + (f_hi - f_lo) * k / (options.load_levels - 1));
+      curves.push_back(loss_curve(g, nominal, loss_options, media, r.load_levels.back(), options.phases));
+    }
+  }
+  for (std::size_t i = 0; i < time.size(); ++i) {
+    const double phase = time[i] * mesh_frequency - std::floor(time[i] * mesh_frequency);
+    double loss = 0.0;
+    for (const auto& series : mesh_forces) {
+      const double f = series[i];
+      if (f <= 0.0 || curves.empty()) continue;
+      // Linear in the force between the two neighbouring levels.
+      const auto upper = std::upper_bound(r.load_levels.begin(), r.load_levels.end() - 1, f);
+      const auto k = static_cast<std::size_t>(std::max<std::ptrdiff_t>(upper - r.load_levels.begin(), 1));
+      const double w = (f - r.load_levels[k - 1]) / (r.load_levels[k] - r.load_levels[k - 1]);
+      loss += (1.0 - w) * at_phase(curves[k - 1], phase) + w * at_phase(curves[k], phase);
+    }
+    r.efficiency.push_back(1.0 - loss / p_in);
+  }
+  r.mean = std::accumulate(r.efficiency.begin(), r.efficiency.end(), 0.0) / static_cast<double>(r.efficiency.size());
+  return r;
+}
+
+}  // namespace gearbench::efficiency

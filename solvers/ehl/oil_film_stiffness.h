@@ -1,0 +1,75 @@
+#pragma once
+// Oil-film stiffness along the path of contact of a spur pair (seed 002): at each contact
+// position the steady isothermal EHL line contact of that position (radius, surface speeds,
+// the pair's share of the load) is solved at the load perturbed by ±δ, and
+//   k_oil = −Δw / Δh_c   [N/m per metre of face width],  h_c the film at the Hertzian centre,
+// a central difference (error O(δ²)). The film is a spring in series with the tooth pair:
+//   1/k_with_film = 1/k_pair + 1/(b·k_oil),
+// k_pair the energy-method pair stiffness (Hertz, bending, shear, axial, foundation).
+#include <string>
+#include <vector>
+
+#include "geometry/gear_pair_geometry.h"
+#include "line_contact_solver.h"
+#include "model/materials.h"
+
+namespace gearbench::ehl {
+
+struct OilFilmStiffnessOptions {
+  int positions = 21;                 ///< contact positions: centres of equal steps from A to E
+  double perturbation = 0.02;         ///< δ: loads w(1 ± δ)
+  std::string load_sharing = "equal";  ///< "equal" or "iso"
+  EhlOptions grid = default_grid();
+
+  static EhlOptions default_grid();
+  void validate() const;              ///< InputError naming the key
+};
+
+struct OilFilmPoint {
+  double position = 0.0;              ///< on the line of action, from T1 [m]
+  double load_per_length = 0.0;       ///< w of this pair [N/m]
+  double reduced_radius = 0.0;        ///< [m]
+  double entrainment = 0.0;           ///< ū [m/s]
+  double h_central = 0.0;             ///< at w [m]
+  double h_min = 0.0;                 ///< at w [m]
+  double p_max = 0.0;                 ///< at w [Pa]
+  double stiffness_per_length = 0.0;  ///< k_oil [N/m²]
+  double stiffness = 0.0;             ///< b·k_oil [N/m]
+  double pair_stiffness = 0.0;        ///< energy method, this pair [N/m]
+  double stiffness_with_film = 0.0;   ///< pair and film in series [N/m]
+  double film_share = 0.0;            ///< the film's part of the compliance [-]
+  double moes_M = 0.0, moes_L = 0.0;
+  /// d ln h_dpdx0 / d ln w from the same solves (Moes' film; compared with his formula).
+  double film_load_exponent = 0.0;
+  int cycles = 0;                     ///< multigrid cycles of the three solves
+};
+
+struct OilFilmStiffnessResult {
+  std::vector<OilFilmPoint> points;
+  double face_width = 0.0;
+  double seconds = 0.0;
+  [[nodiscard]] std::string summary() const;
+};
+
+class OilFilmStiffness {
+ public:
+  /// `fluid` supplies η0, α (or z), the rheology models and E′; radius, load and speeds come
+  /// from the gears at each position.
+  OilFilmStiffness(const geometry::GearPairGeometry& geometry, const std::array<model::Material, 2>& materials,
+                   const model::OperatingPoint& operating, const LineContactData& fluid,
+                   OilFilmStiffnessOptions options);
+  /// Throws ConvergenceError naming the position whose EHL solve did not converge.
+  [[nodiscard]] OilFilmStiffnessResult solve() const;
+
+ private:
+  [[nodiscard]] LineContactData contact_at(double s, double load_per_length) const;
+  [[nodiscard]] EhlResult solve_contact(const LineContactData& d, double s) const;
+
+  const geometry::GearPairGeometry& geometry_;
+  std::array<model::Material, 2> materials_;
+  model::OperatingPoint operating_;
+  LineContactData fluid_;
+  OilFilmStiffnessOptions options_;
+};
+
+}  // namespace gearbench::ehl
