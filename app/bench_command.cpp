@@ -1,18 +1,27 @@
 // `gearbench bench`: runs the Google Benchmark suite and stores its JSON together with the
 // git, build and machine context (Google Benchmark records none of these itself) and the
 // side-by-side ratios: a benchmark named X_baseline pairs with X in the same run.
+// With --record the run has repetitions (for the U test of `gearbench report perf`) and
+// lands in reports/perf/<date>_<sha>.json, the performance history of the checkout.
+#include <array>
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <unistd.h>
 
 #include "build_info.h"
 #include "commands.h"
+#include "interrupt.h"
 #include "model/errors.h"
 #include "model/json_reader.h"
+#include "perf_history.h"
 #include "report.h"
 
 namespace gearbench::app {
@@ -25,12 +34,14 @@ namespace {
 std::string family(const std::string& run_name) { return run_name.substr(0, run_name.find('/')); }
 
 /// Solver over baseline for every run X[/args] that has a run X_baseline[/args] with the same
-/// arguments, or a baseline without arguments for its whole family.
+/// arguments, or a baseline without arguments for its whole family; medians over repetitions.
 json side_by_side_ratios(const json& benchmarks) {
-  std::map<std::string, double> times;  // run name -> time
+  std::map<std::string, std::vector<double>> samples;  // run name -> time per repetition
   for (const auto& b : benchmarks)
-    if (b.value("run_type", "iteration") == "iteration" || b.value("aggregate_name", "") == "median")
-      times.try_emplace(b["run_name"].get<std::string>(), b["real_time"].get<double>());
+    if (b.value("run_type", "iteration") == "iteration")
+      samples[b["run_name"].get<std::string>()].push_back(b["real_time"].get<double>());
+  std::map<std::string, double> times;
+  for (const auto& [name, s] : samples) times[name] = reports::median(s);
   const std::string suffix = "_baseline";
   json ratios = json::object();
   for (const auto& [name, time] : times) {
@@ -47,19 +58,62 @@ json side_by_side_ratios(const json& benchmarks) {
   }
   return ratios;
 }
+
+/// Commit time of `sha` in the source checkout as "YYYY-MM-DDTHH:MM:SSZ", or "" when git
+/// cannot tell (no git, not a checkout, unknown sha). Orders records by commit, not by
+/// when they were recorded.
+std::string commit_time_utc(const std::string& sha) {
+  if (sha.empty() || sha == "unknown") return "";
+  const std::string command = fmt::format("git -C '{}' log -1 --format=%ct '{}' 2>/dev/null", build::source_dir(), sha);
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(::popen(command.c_str(), "r"), ::pclose);
+  if (!pipe) return "";
+  std::array<char, 64> buffer{};
+  if (!std::fgets(buffer.data(), buffer.size(), pipe.get())) return "";
+  char* end = nullptr;
+  const std::time_t t = std::strtoll(buffer.data(), &end, 10);
+  if (end == buffer.data()) return "";
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  std::array<char, 32> out{};
+  std::strftime(out.data(), out.size(), "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return out.data();
+}
+
+/// out_dir/<stem>.json, or <stem>-2.json, -3, ... when taken: a record is never overwritten.
+fs::path free_path(const fs::path& out_dir, const std::string& stem) {
+  fs::path target = out_dir / (stem + ".json");
+  for (int suffix = 2; fs::exists(target); ++suffix) target = out_dir / fmt::format("{}-{}.json", stem, suffix);
+  return target;
+}
 }  // namespace
 
-int bench_command(const std::string& out_dir, const std::string& filter, double min_time) {
+void BenchRequest::validate() const {
+  if (!(min_time > 0.0)) throw InputError(fmt::format("--min-time = {}: must be > 0 s", min_time));
+  if (repetitions < 1 || repetitions > 1000)
+    throw InputError(fmt::format("--repetitions = {}: must lie in [1, 1000]", repetitions));
+}
+
+int bench_command(const BenchRequest& request) {
+  request.validate();
   const std::string exe = build::benchmark_executable();
   if (!fs::exists(exe))
     throw InputError(fmt::format("benchmark executable {} not built (configure with "
                                  "GEARBENCH_BUILD_BENCHMARKS=ON)", exe));
-  fs::create_directories(out_dir);
-  const auto raw = fs::path(out_dir) / fmt::format(".bench-{}.json", ::getpid());
+  fs::create_directories(request.out_dir);
+  const auto raw = fs::path(request.out_dir) / fmt::format(".bench-{}.json", ::getpid());
+  // Every repetition goes into the file (the U test needs them); the console shows only
+  // the aggregates. Interleaving the repetitions of all benchmarks keeps a slow drift of
+  // the machine from landing on one benchmark.
+  const std::string repetitions =
+      request.repetitions > 1
+          ? fmt::format("--benchmark_repetitions={} --benchmark_display_aggregates_only=true "
+                        "--benchmark_enable_random_interleaving=true ", request.repetitions)
+          : std::string();
   const std::string command = fmt::format(
       "'{}' --benchmark_format=console --benchmark_out='{}' --benchmark_out_format=json "
-      "--benchmark_min_time={} {} 1>&2",
-      exe, raw.string(), min_time, filter.empty() ? "" : fmt::format("--benchmark_filter='{}'", filter));
+      "--benchmark_min_time={} {}{} 1>&2",
+      exe, raw.string(), request.min_time, repetitions,
+      request.filter.empty() ? "" : fmt::format("--benchmark_filter='{}'", request.filter));
   std::cerr << "running " << exe << "\n";
   if (std::system(command.c_str()) != 0) {
     fs::remove(raw);
@@ -68,13 +122,19 @@ int bench_command(const std::string& out_dir, const std::string& filter, double 
   json record = model::read_json_file(raw.string());
   fs::remove(raw);
   record["gearbench"] = reports::provenance();
+  if (const auto t = commit_time_utc(build::git_sha()); !t.empty()) record["gearbench"]["code"]["commit_time_utc"] = t;
+  record["gearbench"]["repetitions"] = request.repetitions;
   record["ratios"] = side_by_side_ratios(record["benchmarks"]);
-  const auto target = fs::path(out_dir) / fmt::format("bench_{}.json", reports::report_folder_name());
-  const auto temp = fs::path(target.string() + ".tmp");
-  std::ofstream(temp) << record.dump(2) << "\n";
-  fs::rename(temp, target);
-  for (const auto& [name, r] : record["ratios"].items())
-    std::cerr << fmt::format("{}: {:.3g} x baseline\n", name, r["ratio"].get<double>());
+  const auto name = reports::report_folder_name();
+  const auto target = free_path(request.out_dir, request.record ? name : "bench_" + name);
+  {
+    const DeferInterrupts defer;  // the record appears whole or not at all
+    const auto temp = fs::path(target.string() + ".tmp");
+    std::ofstream(temp) << record.dump(2) << "\n";
+    fs::rename(temp, target);
+  }
+  for (const auto& [run, r] : record["ratios"].items())
+    std::cerr << fmt::format("{}: {:.3g} x baseline\n", run, r["ratio"].get<double>());
   std::cout << target.string() << "\n";
   return exit_ok;
 }

@@ -16,7 +16,38 @@ int run_command(const std::string& case_path, const std::string& output_path);
 int verify_command(const std::string& tier, const std::string& out_dir, const std::string& cases_dir,
                    const std::string& bench_record);
 int report_compare_command(const std::string& before, const std::string& after);
-int bench_command(const std::string& out_dir, const std::string& filter, double min_time);
+
+/// What `gearbench bench` runs and where the record goes.
+struct BenchRequest {
+  std::string out_dir;
+  std::string filter;       ///< regular expression selecting benchmarks ("" = all)
+  double min_time = 0.2;    ///< minimum seconds per benchmark (and per repetition)
+  int repetitions = 1;
+  bool record = false;      ///< a performance-history record: <date>_<sha>.json
+  void validate() const;    ///< InputError when out of range
+};
+int bench_command(const BenchRequest& request);
+
+/// `gearbench report perf`: the performance history of the records in `dir`.
+struct PerfReportRequest {
+  std::string dir;
+  std::string out_dir;
+  double alpha = 0.05;
+  double threshold = 0.05;
+  std::string clock = "cpu";  ///< "cpu" or "real": which benchmark time is compared
+  bool pdf = false;
+};
+int report_perf_command(const PerfReportRequest& request);
+
+/// `gearbench report pdf`: PDF figures of a written report (from its report.json).
+int report_pdf_command(const std::string& report_dir);
+
+/// `gearbench sweep SWEEP.json`: a grid of cases through the kind registry, over MPI ranks
+/// when started with mpirun.
+int sweep_command(const std::string& sweep_path, const std::string& out_dir, bool pdf);
+
+/// Where `bench --record` writes and `report perf` reads: the checkout's reports/perf.
+std::string default_perf_dir();
 
 /// Where `verify` and `bench` write unless told otherwise: an ignored folder of the checkout.
 std::string default_output_dir();

@@ -43,12 +43,39 @@ int main(int argc, char** argv) {
   compare->add_option("A", before, "earlier report folder or report.json")->required();
   compare->add_option("B", after, "later report folder or report.json")->required();
 
+  auto* perf = report->add_subcommand("perf", "performance history over commits from `bench --record` records");
+  PerfReportRequest perf_request{.dir = default_perf_dir(), .out_dir = default_output_dir() + "/perf"};
+  perf->add_option("--dir", perf_request.dir, "folder of the benchmark records")->capture_default_str();
+  perf->add_option("--out", perf_request.out_dir, "folder for perf.md, perf.json and figures/")->capture_default_str();
+  perf->add_option("--alpha", perf_request.alpha, "significance level of the U test")->capture_default_str();
+  perf->add_option("--threshold", perf_request.threshold,
+                   "relative change of the median below which nothing is flagged")->capture_default_str();
+  perf->add_option("--clock", perf_request.clock, "compare CPU time (default) or real (wall-clock) time")
+      ->check(CLI::IsMember({"cpu", "real"}))->capture_default_str();
+  perf->add_flag("--pdf", perf_request.pdf, "also draw the figures as PDF");
+  std::string pdf_report;
+  auto* pdf = report->add_subcommand("pdf", "draw a report's figures as PDF (for publications)");
+  pdf->add_option("REPORT", pdf_report, "report folder or report.json")->required();
+
   std::string bench_out = default_output_dir() + "/bench", filter;
   double min_time = 0.2;
   auto* bench = cli.add_subcommand("bench", "run the benchmarks and record them with their context");
   bench->add_option("--out", bench_out, "folder for the benchmark record")->capture_default_str();
   bench->add_option("--filter", filter, "regular expression selecting benchmarks");
   bench->add_option("--min-time", min_time, "minimum seconds per benchmark")->capture_default_str();
+  bool record_run = false;
+  int repetitions = 0;
+  bench->add_flag("--record", record_run,
+                  "a performance-history record: repetitions, into reports/perf/<date>_<sha>.json");
+  auto* repetitions_option = bench->add_option("--repetitions", repetitions,
+                                               "repetitions of every benchmark (default 10 with --record, else 1)");
+
+  std::string sweep_path, sweep_out;
+  bool sweep_pdf = false;
+  auto* sweep = cli.add_subcommand("sweep", "run a grid of cases (over MPI ranks under mpirun) into a table and figures");
+  sweep->add_option("SWEEP", sweep_path, "sweep file (JSON): base, vary, outputs")->required();
+  sweep->add_option("--out", sweep_out, "output folder (default reports/out/sweep/<sweep name>)");
+  sweep->add_flag("--pdf", sweep_pdf, "also draw the figures as PDF");
 
   install_interrupt_handler();
   try {
@@ -62,7 +89,16 @@ int main(int argc, char** argv) {
     if (*run) return run_command(case_path, output_path);
     if (*verify) return verify_command(tier, out_dir, cases_dir, bench_record);
     if (*compare) return report_compare_command(before, after);
-    if (*bench) return bench_command(bench_out, filter, min_time);
+    if (*perf) return report_perf_command(perf_request);
+    if (*pdf) return report_pdf_command(pdf_report);
+    if (*sweep) return sweep_command(sweep_path, sweep_out, sweep_pdf);
+    if (*bench) {
+      const bool out_given = bench->count("--out") > 0;
+      return bench_command({.out_dir = record_run && !out_given ? default_perf_dir() : bench_out,
+                            .filter = filter, .min_time = min_time,
+                            .repetitions = repetitions_option->count() ? repetitions : (record_run ? 10 : 1),
+                            .record = record_run});
+    }
   } catch (const gearbench::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return exit_bad_input;

@@ -1,6 +1,7 @@
 #include "report.h"
 
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <ctime>
 #include <filesystem>
@@ -63,6 +64,32 @@ std::string cpu_model() {
   return "unknown";
 }
 
+/// Installed memory rounded to whole GiB (MemTotal moves by a few MiB between kernels).
+long memory_gib() {
+  std::ifstream in("/proc/meminfo");
+  std::string key;
+  long kib = 0;
+  while (in >> key) {
+    if (key == "MemTotal:") {
+      in >> kib;
+      break;
+    }
+    std::getline(in, key);
+  }
+  return std::lround(static_cast<double>(kib) / (1024.0 * 1024.0));
+}
+
+/// 64-bit FNV-1a (Fowler, Noll, Vo; IETF draft-eastlake-fnv-17, section 2): stable across
+/// compilers and standard libraries, unlike std::hash, so committed fingerprints stay valid.
+std::uint64_t fnv1a(const std::string& text) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
 json dependency_versions() {
   json deps = json::object();
   std::string list = build::dependency_versions();
@@ -114,8 +141,9 @@ json provenance() {
                 {"dirty", build::git_dirty()}}},
       {"build", {{"compiler", build::compiler()}, {"build_type", build::build_type()},
                  {"flags", build::cxx_flags()}, {"dependencies", dependency_versions()}}},
-      {"machine", {{"cpu_model", cpu_model()}, {"cores", cores},
-                   {"fingerprint", machine_fingerprint()}}},
+      {"machine", {{"cpu_model", cpu_model()}, {"cores", cores}, {"memory_GiB", memory_gib()},
+                   {"fingerprint", machine_fingerprint()},
+                   {"hardware_fingerprint", hardware_fingerprint()}}},
       {"created_utc", utc_now("%Y-%m-%dT%H:%M:%SZ")},
   };
 }
@@ -125,6 +153,11 @@ std::string machine_fingerprint() {
                                       std::thread::hardware_concurrency(), build::compiler(),
                                       build::build_type(), build::cxx_flags());
   return fmt::format("{:016x}", std::hash<std::string>{}(key));
+}
+
+std::string hardware_fingerprint() {
+  return fmt::format("{:016x}", fnv1a(fmt::format("{}|{}|{}", cpu_model(), std::thread::hardware_concurrency(),
+                                                  memory_gib())));
 }
 
 std::string report_folder_name() {
@@ -163,7 +196,7 @@ json to_json(const Report& report) {
     figures.push_back({{"id", f.id}, {"section", f.section}, {"title", f.title},
                        {"xlabel", f.xlabel}, {"ylabel", f.ylabel}, {"series", series},
                        {"log_y", f.log_y}, {"impulses", f.impulses},
-                       {"file", "figures/" + f.id + ".svg"}});
+                       {"file", "figures/" + f.id + ".svg"}, {"data", "figures/" + f.id + ".csv"}});
   }
   json notes = json::array();
   for (const auto& n : report.notes) notes.push_back({{"section", n.section}, {"text", n.text}});
@@ -247,7 +280,8 @@ std::string to_markdown(const Report& report, const json& meta) {
       if (c.contains("error")) md += fmt::format("\n> error: {}\n\n", c["error"].get<std::string>());
     }
     for (const auto& f : report.figures)
-      if (f.section == section) md += fmt::format("\n![{}](figures/{}.svg)\n", f.title, f.id);
+      if (f.section == section)
+        md += fmt::format("\n![{}](figures/{}.svg) ([data](figures/{}.csv))\n", f.title, f.id, f.id);
   }
   md += "\n## Build\n\n| dependency | version |\n|---|---|\n";
   for (const auto& [name, version] : meta["build"]["dependencies"].items())
@@ -279,7 +313,7 @@ std::string write_report(const Report& report, const std::string& parent) {
     const json j = to_json(report);
     write_file(temp / "report.json", j.dump(2) + "\n");
     write_file(temp / "report.md", to_markdown(report, j));
-    for (const auto& f : report.figures) render_svg(f, (temp / "figures" / (f.id + ".svg")).string());
+    for (const auto& f : report.figures) write_figure(f, (temp / "figures" / f.id).string());
     fs::rename(temp, target);
   } catch (...) {
     fs::remove_all(temp);  // never leave a half-written report behind

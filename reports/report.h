@@ -59,6 +59,9 @@ struct Figure {
   std::vector<Series> series;
   bool log_y = false;
   bool impulses = false;  ///< spectra: one vertical line per bin
+  /// Categorical x axis: label i is drawn at x = i (e.g. commits of a performance history).
+  std::vector<std::string> xtic_labels;
+  bool points = false;    ///< mark every point (sparse data such as one value per commit)
 };
 
 /// Free text for a section (e.g. what a seed reproduction reached and why it differs).
@@ -80,6 +83,9 @@ struct Report {
 nlohmann::json provenance();
 /// A fingerprint of the machine and toolchain: timings are comparable only when equal.
 std::string machine_fingerprint();
+/// A stable hash of the hardware alone (CPU model, core count, memory): benchmark times
+/// are compared across commits only between runs with the same one.
+std::string hardware_fingerprint();
 /// "<UTC date>_<short sha>", the report folder name.
 std::string report_folder_name();
 
@@ -94,5 +100,14 @@ std::string write_report(const Report& report, const std::string& parent);
 /// Renders a figure to SVG with gnuplot; returns false (and leaves no file) when gnuplot
 /// is not available or fails.
 bool render_svg(const Figure& figure, const std::string& svg_path);
+/// The same as a PDF for publications (gnuplot's pdfcairo terminal).
+bool render_pdf(const Figure& figure, const std::string& pdf_path);
+/// The figure's data as CSV: one row per point, columns series, x, [x label,] y.
+void write_figure_csv(const Figure& figure, const std::string& csv_path);
+/// A figure back from its report.json entry (as written by to_json).
+Figure figure_from_json(const nlohmann::json& j);
+/// Writes stem.csv and stem.svg, and stem.pdf when `pdf`; false when a drawing failed
+/// (the CSV is always written).
+bool write_figure(const Figure& figure, const std::string& stem, bool pdf = false);
 
 }  // namespace gearbench::reports

@@ -1,0 +1,308 @@
+#include "perf_history.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+#include <set>
+
+#include "mann_whitney.h"
+#include "model/errors.h"
+#include "model/json_reader.h"
+
+namespace gearbench::reports {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+double median(std::vector<double> values) {
+  if (values.empty()) throw std::invalid_argument("median of an empty sample");
+  const auto mid = values.begin() + static_cast<long>(values.size() / 2);
+  std::nth_element(values.begin(), mid, values.end());
+  if (values.size() % 2 == 1) return *mid;
+  return 0.5 * (*mid + *std::max_element(values.begin(), mid));
+}
+
+std::vector<double> PerfRun::ratio_samples(const std::string& run) const {
+  const auto b = baseline_of.find(run);
+  if (b == baseline_of.end()) return {};
+  const auto& solver = seconds.at(run);
+  const auto& baseline = seconds.at(b->second);
+  std::vector<double> out;
+  for (std::size_t i = 0; i < std::min(solver.size(), baseline.size()); ++i)
+    if (baseline[i] > 0.0) out.push_back(solver[i] / baseline[i]);
+  return out;
+}
+
+void PerfOptions::validate() const {
+  if (!(alpha > 0.0 && alpha < 1.0))
+    throw InputError(fmt::format("--alpha = {}: must lie in (0, 1)", alpha));
+  if (!(threshold >= 0.0 && threshold < 10.0))
+    throw InputError(fmt::format("--threshold = {}: must lie in [0, 10) (a relative change)", threshold));
+}
+
+namespace {
+
+double unit_seconds(const std::string& unit, const std::string& file) {
+  if (unit == "ns") return 1e-9;
+  if (unit == "us") return 1e-6;
+  if (unit == "ms") return 1e-3;
+  if (unit == "s") return 1.0;
+  throw InputError(fmt::format("{}: time_unit = \"{}\": expected ns, us, ms or s", file, unit));
+}
+
+std::string text_or(const json& j, const char* key, const std::string& fallback) {
+  return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : fallback;
+}
+
+}  // namespace
+
+PerfClock parse_perf_clock(const std::string& name) {
+  if (name == "cpu") return PerfClock::cpu;
+  if (name == "real") return PerfClock::real;
+  throw InputError(fmt::format("--clock = {}: expected cpu or real", name));
+}
+
+PerfRun parse_perf_record(const json& record, const std::string& file, PerfClock clock) {
+  if (!record.is_object() || !record.contains("benchmarks") || !record.contains("gearbench"))
+    throw InputError(fmt::format("{}: not a gearbench bench record (no benchmarks/gearbench keys)", file));
+  const json& g = record["gearbench"];
+  const json code = g.value("code", json::object()), m = g.value("machine", json::object());
+  PerfRun run;
+  run.file = file;
+  run.sha = code.value("git_sha", "unknown");
+  run.dirty = code.value("dirty", false);
+  const std::string created = text_or(g, "created_utc", "");
+  run.order_key = text_or(code, "commit_time_utc", created) + "|" + created;
+  run.fingerprint = text_or(m, "hardware_fingerprint", text_or(m, "fingerprint", "unknown"));
+  run.machine = fmt::format("{}, {} cores{}", text_or(m, "cpu_model", "unknown CPU"), m.value("cores", 0u),
+                            m.contains("memory_GiB") ? fmt::format(", {} GiB", m["memory_GiB"].dump()) : "");
+  run.build_type = g.value("build", json::object()).value("build_type", "unknown");
+  for (const auto& b : record["benchmarks"]) {
+    if (b.value("run_type", "iteration") != "iteration") continue;  // aggregates are recomputed
+    const char* key = clock == PerfClock::cpu ? "cpu_time" : "real_time";
+    const double t = b.at(key).get<double>() * unit_seconds(b.value("time_unit", "ns"), file);
+    run.seconds[b.at("run_name").get<std::string>()].push_back(t);
+  }
+  if (record.contains("ratios"))
+    for (const auto& [name, r] : record["ratios"].items()) {
+      const std::string baseline = r.value("baseline", "");
+      if (run.seconds.count(name) && run.seconds.count(baseline)) run.baseline_of[name] = baseline;
+    }
+  return run;
+}
+
+std::vector<PerfRun> load_perf_records(const std::string& dir, PerfClock clock) {
+  if (!fs::is_directory(dir)) throw InputError(fmt::format("--dir {}: not a directory", dir));
+  std::vector<PerfRun> runs;
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) {
+    const json j = model::read_json_file(f.string());
+    // Other JSON beside the records (a report.json in a milestone folder) is not a record.
+    if (j.is_object() && j.contains("benchmarks") && j.contains("gearbench"))
+      runs.push_back(parse_perf_record(j, f.string(), clock));
+  }
+  return runs;
+}
+
+namespace {
+
+PerfChange compare_samples(const std::string& name, bool ratio, std::size_t before, std::size_t after,
+                           const std::vector<double>& a, const std::vector<double>& b,
+                           const PerfOptions& options) {
+  PerfChange c{.name = name, .ratio = ratio, .before = before, .after = after};
+  c.median_before = median(a);
+  c.median_after = median(b);
+  c.change = c.median_before > 0.0 ? c.median_after / c.median_before - 1.0 : 0.0;
+  c.tested = a.size() >= utest_min_repetitions && b.size() >= utest_min_repetitions;
+  if (!c.tested) {
+    c.verdict = "untested";
+    return c;
+  }
+  c.p_value = mann_whitney_u(a, b).p_value;
+  if (c.p_value < options.alpha && c.change > options.threshold) c.verdict = "regression";
+  else if (c.p_value < options.alpha && c.change < -options.threshold) c.verdict = "improvement";
+  else c.verdict = "unchanged";
+  return c;
+}
+
+/// Index of the latest run before `j` for which `comparable(i)` holds, or j when none.
+template <class Pred>
+std::size_t previous(std::size_t j, Pred comparable) {
+  for (std::size_t i = j; i-- > 0;)
+    if (comparable(i)) return i;
+  return j;
+}
+
+/// Display unit for times whose largest value is `largest` seconds.
+std::pair<std::string, double> time_unit(double largest) {
+  if (largest < 1e-6) return {"ns", 1e9};
+  if (largest < 1e-3) return {"µs", 1e6};
+  if (largest < 1.0) return {"ms", 1e3};
+  return {"s", 1.0};
+}
+
+std::string figure_id(const std::string& prefix, const std::string& name) {
+  std::string id = prefix;
+  for (char ch : name) id.push_back(std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_');
+  return id;
+}
+
+std::string clock_name(PerfClock clock) { return clock == PerfClock::cpu ? "CPU" : "real"; }
+
+std::vector<Figure> history_figures(const std::vector<PerfRun>& runs, PerfClock clock) {
+  std::vector<std::string> commits;  // distinct, in order
+  std::vector<double> x_of_run;
+  for (const auto& r : runs) {
+    if (commits.empty() || commits.back() != r.commit_label()) commits.push_back(r.commit_label());
+    x_of_run.push_back(static_cast<double>(commits.size() - 1));
+  }
+  std::set<std::string> names, ratio_names;
+  for (const auto& r : runs) {
+    for (const auto& [n, s] : r.seconds) names.insert(n);
+    for (const auto& [n, b] : r.baseline_of) ratio_names.insert(n);
+  }
+  auto draw = [&](const std::string& name, bool ratio) {
+    std::map<std::string, Series> by_machine;
+    double largest = 0.0;
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      const auto samples = ratio ? runs[i].ratio_samples(name)
+                                 : (runs[i].seconds.count(name) ? runs[i].seconds.at(name) : std::vector<double>{});
+      if (samples.empty()) continue;
+      auto& s = by_machine[runs[i].fingerprint];
+      s.label = fmt::format("{} [{}] {}", runs[i].machine, runs[i].fingerprint.substr(0, 8), runs[i].build_type);
+      s.x.push_back(x_of_run[i]);
+      s.y.push_back(median(samples));
+      largest = std::max(largest, s.y.back());
+    }
+    const auto [unit, scale] = ratio ? std::pair<std::string, double>{"-", 1.0} : time_unit(largest);
+    Figure f{.id = figure_id(ratio ? "ratio_" : "time_", name), .section = "Performance history",
+             .title = ratio ? name + " over its baseline" : name,
+             .xlabel = "commit",
+             .ylabel = ratio ? fmt::format("median {} time ratio solver/baseline [-]", clock_name(clock))
+                           : fmt::format("median {} time [{}]", clock_name(clock), unit)};
+    for (auto& [fp, s] : by_machine) {
+      for (double& y : s.y) y *= scale;
+      f.series.push_back(std::move(s));
+    }
+    f.xtic_labels = commits;
+    f.points = true;
+    return f;
+  };
+  std::vector<Figure> out;
+  for (const auto& n : names) out.push_back(draw(n, false));
+  for (const auto& n : ratio_names) out.push_back(draw(n, true));
+  return out;
+}
+
+}  // namespace
+
+PerfHistory analyse_perf_history(std::vector<PerfRun> runs, const PerfOptions& options) {
+  options.validate();
+  std::stable_sort(runs.begin(), runs.end(), [](const PerfRun& a, const PerfRun& b) { return a.order_key < b.order_key; });
+  PerfHistory h;
+  for (std::size_t j = 0; j < runs.size(); ++j) {
+    const auto& now = runs[j];
+    const std::size_t same_machine = previous(j, [&](std::size_t i) {
+      return runs[i].fingerprint == now.fingerprint && runs[i].build_type == now.build_type;
+    });
+    if (same_machine != j)
+      for (const auto& [name, samples] : now.seconds)
+        if (const auto it = runs[same_machine].seconds.find(name); it != runs[same_machine].seconds.end())
+          h.changes.push_back(compare_samples(name, false, same_machine, j, it->second, samples, options));
+    const std::size_t any_machine = previous(j, [&](std::size_t i) { return runs[i].build_type == now.build_type; });
+    if (any_machine != j)
+      for (const auto& [name, baseline] : now.baseline_of) {
+        const auto before = runs[any_machine].ratio_samples(name);
+        if (!before.empty())
+          h.changes.push_back(compare_samples(name, true, any_machine, j, before, now.ratio_samples(name), options));
+      }
+  }
+  h.figures = history_figures(runs, options.clock);
+  h.runs = std::move(runs);
+  return h;
+}
+
+std::vector<const PerfChange*> PerfHistory::latest_regressions() const {
+  std::vector<const PerfChange*> out;
+  for (const auto& c : changes) {
+    if (c.verdict != "regression") continue;
+    bool newest = true;
+    for (std::size_t k = c.after + 1; k < runs.size(); ++k)
+      if (c.ratio ? runs[k].build_type == runs[c.after].build_type
+                  : runs[k].fingerprint == runs[c.after].fingerprint && runs[k].build_type == runs[c.after].build_type)
+        newest = false;
+    if (newest) out.push_back(&c);
+  }
+  return out;
+}
+
+namespace {
+std::string describe(const PerfChange& c, const std::vector<PerfRun>& runs) {
+  const auto [unit, scale] = time_unit(std::max(c.median_before, c.median_after));
+  auto value = [&](double v) {
+    return c.ratio ? fmt::format("{:.4g}", v) : fmt::format("{:.4g} {}", v * scale, unit);
+  };
+  return fmt::format("| `{}` | {} | {} → {} | {} → {} | {:+.1f} % | {} | {} |\n", c.name,
+                     c.ratio ? "ratio" : "time", runs[c.before].commit_label(), runs[c.after].commit_label(),
+                     value(c.median_before), value(c.median_after), 100.0 * c.change,
+                     c.tested ? fmt::format("{:.3g}", c.p_value) : std::string("—"),
+                     c.verdict == "regression" ? std::string("**regression**") : c.verdict);
+}
+constexpr const char* change_header =
+    "| benchmark | compared | commits | median | change | p (U test) | verdict |\n|---|---|---|---|---|---|---|\n";
+}  // namespace
+
+std::string PerfHistory::markdown(const PerfOptions& options) const {
+  std::string md = "# gearbench performance history\n\n";
+  md += fmt::format(
+      "{} benchmark records in commit order; {} time per iteration. Times are compared only between runs on the same "
+      "hardware (fingerprint of CPU model, cores and memory) and build type; solver/baseline ratios "
+      "across machines. A change is flagged when the two-sided Mann–Whitney U test over the "
+      "repetitions gives p < {} and the median moved by more than {:.0f} %; runs with fewer than {} "
+      "repetitions are not tested.\n\n",
+      runs.size(), clock_name(options.clock), options.alpha, 100.0 * options.threshold, utest_min_repetitions);
+  md += "| # | commit | record | machine | fingerprint | build |\n|---|---|---|---|---|---|\n";
+  for (std::size_t i = 0; i < runs.size(); ++i)
+    md += fmt::format("| {} | `{}` | {} | {} | `{}` | {} |\n", i, runs[i].commit_label(),
+                      fs::path(runs[i].file).filename().string(), runs[i].machine, runs[i].fingerprint,
+                      runs[i].build_type);
+  const auto latest = latest_regressions();
+  md += fmt::format("\n## Regressions at the newest runs: {}\n\n", latest.size());
+  if (!latest.empty()) {
+    md += change_header;
+    for (const auto* c : latest) md += describe(*c, runs);
+  }
+  md += "\n## Every comparison\n\n";
+  md += change_header;
+  for (const auto& c : changes) md += describe(c, runs);
+  md += "\n## Figures\n\n";
+  for (const auto& f : figures)
+    md += fmt::format("![{}](figures/{}.svg) ([data](figures/{}.csv))\n\n", f.title, f.id, f.id);
+  return md;
+}
+
+json PerfHistory::to_json(const PerfOptions& options) const {
+  json j{{"alpha", options.alpha}, {"threshold", options.threshold},
+         {"clock", options.clock == PerfClock::cpu ? "cpu" : "real"}};
+  j["runs"] = json::array();
+  for (const auto& r : runs)
+    j["runs"].push_back({{"file", r.file}, {"commit", r.sha}, {"dirty", r.dirty}, {"machine", r.machine},
+                         {"fingerprint", r.fingerprint}, {"build_type", r.build_type}});
+  j["changes"] = json::array();
+  for (const auto& c : changes) {
+    j["changes"].push_back({{"name", c.name}, {"kind", c.ratio ? "ratio" : "time"}, {"before", c.before},
+                            {"after", c.after}, {"median_before", c.median_before},
+                            {"median_after", c.median_after}, {"change", c.change}, {"verdict", c.verdict}});
+    if (c.tested) j["changes"].back()["p_value"] = c.p_value;
+  }
+  j["latest_regressions"] = json::array();
+  for (const auto* c : latest_regressions()) j["latest_regressions"].push_back(c->name);
+  return j;
+}
+
+}  // namespace gearbench::reports
