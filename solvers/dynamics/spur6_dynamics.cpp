@@ -1,7 +1,6 @@
 #include "spur6_dynamics.h"
 
 #include <Eigen/Dense>
-#include <fftw3.h>
 
 #include <algorithm>
 #include <chrono>
@@ -193,41 +192,6 @@ std::vector<double> Spur6Dynamics::natural_frequencies() const {
     if (solver.eigenvalues()(i) > 1e-10 * scale) f.push_back(std::sqrt(solver.eigenvalues()(i)) / (2.0 * pi));
   return f;
 }
-
-namespace {
-
-Spur6Result::Stats statistics(const std::vector<double>& v) {
-  Spur6Result::Stats s;
-  const double n = static_cast<double>(v.size());
-  s.mean = std::accumulate(v.begin(), v.end(), 0.0) / n;
-  double sq = 0.0;
-  for (double x : v) sq += x * x;
-  s.rms = std::sqrt(sq / n);
-  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-  s.peak_to_peak = *hi - *lo;
-  return s;
-}
-
-/// One-sided amplitude spectrum of v − mean(v) by FFTW (no window: the record holds whole periods).
-void amplitude_spectrum(const std::vector<double>& v, double dt, std::vector<double>& f, std::vector<double>& a) {
-  const int n = static_cast<int>(v.size());
-  std::vector<double> in(v);
-  const double mean = std::accumulate(in.begin(), in.end(), 0.0) / n;
-  for (auto& x : in) x -= mean;
-  std::vector<std::complex<double>> out(static_cast<std::size_t>(n / 2 + 1));
-  fftw_plan plan = fftw_plan_dft_r2c_1d(n, in.data(), reinterpret_cast<fftw_complex*>(out.data()), FFTW_ESTIMATE);
-  fftw_execute(plan);
-  fftw_destroy_plan(plan);
-  f.resize(out.size());
-  a.resize(out.size());
-  for (std::size_t k = 0; k < out.size(); ++k) {
-    f[k] = static_cast<double>(k) / (n * dt);
-    const bool unpaired = k == 0 || 2 * static_cast<int>(k) == n;  // DC and Nyquist have no mirror
-    a[k] = (unpaired ? 1.0 : 2.0) * std::abs(out[k]) / n;
-  }
-}
-
-}  // namespace
 
 Spur6Result Spur6Dynamics::solve() const {
   const auto start = std::chrono::steady_clock::now();

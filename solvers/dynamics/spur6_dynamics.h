@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cvode_integrator.h"
+#include "response_analysis.h"
 #include "geometry/gear_pair_geometry.h"
 #include "model/materials.h"
 #include "stiffness/cubic_spline.h"
@@ -52,7 +53,7 @@ struct Spur6Result {
   std::vector<double> bearing_force_x1;      ///< pinion bearing, along the line of action [N]
   double static_mesh_force = 0.0;            ///< F0 = T1/R_b1 [N]
   double dynamic_factor = 0.0;               ///< max F_m / F0
-  struct Stats { double mean = 0, rms = 0, peak_to_peak = 0; };
+  using Stats = ResponseStats;
   Stats te, force, friction;
   std::vector<double> spectrum_frequency;    ///< [Hz]
   std::vector<double> spectrum_te;           ///< amplitude of δ [m]
