@@ -259,7 +259,7 @@ TEST(Cli, DynamicsRunsAndValidates) {
   EXPECT_GT(r["dynamic_factor"].get<double>(), 1.0);
   EXPECT_EQ(r["natural_frequencies_Hz"].size(), 5u);
   const std::pair<std::function<void(json&)>, std::string> bad[] = {
-      {[](json& c) { c["model"] = "herringbone12"; }, "model = \"herringbone12\": allowed values are spur6"},
+      {[](json& c) { c["model"] = "spur7"; }, "model = \"spur7\": allowed values are spur6, herringbone12"},
       {[](json& c) { c["friction"]["mu"] = 0.9; }, "friction.mu = 0.9: allowed range is [0, 0.5]"},
       {[](json& c) { c.erase("operating"); }, "operating: missing required key"},
       {[](json& c) { c["gear_pair"]["helix_angle_deg"] = 10; }, "gear_pair.helix_angle_deg = 10: model \"spur6\" needs 0"},

@@ -98,13 +98,17 @@ HalfMesh::HalfMesh(const geometry::GearPairGeometry& geometry, const std::array<
   if (geometry_.base_helix_angle() > 0.0) {
     build_tables(materials);
   } else {
+    // As the 6-DOF model: k̄ over the positions A + i·p_bt/N, the arms over the midpoints.
     constexpr int samples = 720;
+    const double pb = geometry_.base_pitch_transverse();
     for (int i = 0; i < samples; ++i) {
-      const double t = period_ * (i + 0.5) / samples;
-      const MeshPoint m = spur_point(t, t);
-      mean_.stiffness += m.stiffness / samples;
-      mean_.chi_pinion += m.chi_pinion / samples;
-      mean_.chi_wheel += m.chi_wheel / samples;
+      for (const double s0 : geometry_.positions_in_contact(path.A + pb * i / samples))
+        mean_.stiffness += (*pair_curve_)(s0) / samples;
+      Sums sums;
+      for (const double s0 : geometry_.positions_in_contact(path.A + pb * (i + 0.5) / samples))
+        sums.add((*pair_curve_)(s0), s0, path);
+      mean_.chi_pinion += options_.friction_coefficient * sums.k_rho1 / sums.k / samples;
+      mean_.chi_wheel += options_.friction_coefficient * sums.k_rho2 / sums.k / samples;
     }
   }
 }

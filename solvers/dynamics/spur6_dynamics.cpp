@@ -92,6 +92,22 @@ Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
     for (const double t : geometry_.positions_in_contact(s0)) sum += pair_stiffness(t);
   }
   p_.mean_mesh_stiffness = sum / samples;
+  // Quasi-static torque balance under the mean friction arms (docs/dynamics-model.md,
+  // "Loads"): ā_i = mean over u·t = (i + ½)·p_bt/N of μ·Σλ_j·k_j·ρ_ij / Σk_j.
+  double arm1 = 0.0, arm2 = 0.0;
+  for (int i = 0; i < samples; ++i) {
+    double k_sum = 0.0, k1 = 0.0, k2 = 0.0;
+    for (const double t : geometry_.positions_in_contact(p_.A + p_.pbt * (i + 0.5) / samples)) {
+      const double kj = pair_stiffness(t), lambda = t > p_.C ? 1.0 : (t < p_.C ? -1.0 : 0.0);
+      k_sum += kj;
+      k1 += kj * lambda * t;
+      k2 += kj * lambda * (p_.T1T2 - t);
+    }
+    arm1 += p_.mu * k1 / k_sum / samples;
+    arm2 += p_.mu * k2 / k_sum / samples;
+  }
+  p_.static_force = p_.T1 / (p_.rb1 + arm1);
+  p_.T2 = p_.static_force * (p_.rb2 + arm2);
   const double me = p_.I1 * p_.I2 / (p_.I1 * p_.rb2 * p_.rb2 + p_.I2 * p_.rb1 * p_.rb1);
   p_.mesh_damping = 2.0 * p_.zeta_mesh * std::sqrt(p_.mean_mesh_stiffness * me);
 }
@@ -125,7 +141,7 @@ Spur6Dynamics::MeshState Spur6Dynamics::mesh(double t, double t_mid, const doubl
     const double k = pair_stiffness(s, cracked, acting);
     const double force = k * delta + p_.mesh_damping * k / p_.mean_mesh_stiffness * delta_rate;
     // The sliding direction of the whole interval (intervals end where a pair passes C).
-    const double lambda = s_mid < p_.C ? 1.0 : (s_mid > p_.C ? -1.0 : 0.0);
+    const double lambda = s_mid > p_.C ? 1.0 : (s_mid < p_.C ? -1.0 : 0.0);
     m.force += force;
     m.friction += p_.mu * lambda * force;
     m.moment1 += p_.mu * lambda * force * s;
@@ -137,18 +153,17 @@ Spur6Dynamics::MeshState Spur6Dynamics::mesh(double t, double t_mid, const doubl
 // docs/dynamics-model.md, "Equations of motion" (seed 003 eq. 12).
 void Spur6Dynamics::derivative(double t, double t_mid, const double* y, double* dydt) const {
   const MeshState m = mesh(t, t_mid, y);
-  const double T2 = p_.T1 * p_.rb2 / p_.rb1;
   for (int i = 0; i < 6; ++i) dydt[i] = y[6 + i];
   dydt[6] = (-m.force - p_.c_bearing * y[6] - p_.k_bearing * y[0]) / p_.m1;
   dydt[7] = (-m.friction - p_.c_bearing * y[7] - p_.k_bearing * y[1]) / p_.m1;
   dydt[8] = (p_.T1 - p_.rb1 * m.force - m.moment1) / p_.I1;
   dydt[9] = (m.force - p_.c_bearing * y[9] - p_.k_bearing * y[3]) / p_.m2;
   dydt[10] = (m.friction - p_.c_bearing * y[10] - p_.k_bearing * y[4]) / p_.m2;
-  dydt[11] = (p_.rb2 * m.force + m.moment2 - T2) / p_.I2;
+  dydt[11] = (p_.rb2 * m.force + m.moment2 - p_.T2) / p_.I2;
 }
 
 std::vector<double> Spur6Dynamics::static_state() const {
-  const double F0 = p_.T1 / p_.rb1;
+  const double F0 = p_.static_force;
   const double delta0 = F0 / p_.mean_mesh_stiffness;
   std::vector<double> y(12, 0.0);
   y[0] = -F0 / p_.k_bearing;
@@ -210,7 +225,7 @@ Spur6Result Spur6Dynamics::solve() const {
   CvodeIntegrator integrator(12, [&](double t, const double* y, double* dydt) { derivative(t, t_mid, y, dydt); },
                              options_.integrator);
   Spur6Result r;
-  r.static_mesh_force = p_.T1 / p_.rb1;
+  r.static_mesh_force = p_.static_force;
   r.mesh_frequency = 1.0 / T_mesh;
   std::vector<double> y = static_state();
   std::vector<double> breaks = switch_times(0.0, t_end);

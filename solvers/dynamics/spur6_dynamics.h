@@ -39,6 +39,8 @@ struct Spur6Options {
 struct Spur6Parameters {
   double m1 = 0, m2 = 0, I1 = 0, I2 = 0, rb1 = 0, rb2 = 0;
   double k_bearing = 0, c_bearing = 0, T1 = 0, mu = 0, zeta_mesh = 0;
+  double T2 = 0;            ///< load torque of the quasi-static balance [N·m]
+  double static_force = 0;  ///< F̄ = T1/(R_b1 + ā1) [N]
   double mean_mesh_stiffness = 0, mesh_damping = 0;
   double A = 0, C = 0, E = 0, T1T2 = 0, pbt = 0, contact_speed = 0;
   double crack_mouth = 0;  ///< s where a pitch crack starts to act (the pinion's reference point)
@@ -51,7 +53,7 @@ struct Spur6Result {
   std::vector<double> mesh_force;            ///< F_m [N]
   std::vector<double> friction_force;        ///< F_f [N]
   std::vector<double> bearing_force_x1;      ///< pinion bearing, along the line of action [N]
-  double static_mesh_force = 0.0;            ///< F0 = T1/R_b1 [N]
+  double static_mesh_force = 0.0;            ///< F̄ = T1/(R_b1 + ā1) [N]
   double dynamic_factor = 0.0;               ///< max F_m / F0
   using Stats = ResponseStats;
   Stats te, force, friction;
