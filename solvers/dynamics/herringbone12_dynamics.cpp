@@ -99,25 +99,34 @@ Herringbone12Dynamics::Herringbone12Dynamics(const geometry::GearPairGeometry& g
   p_.mean_mesh_stiffness = mesh_.mean_stiffness();
   const double me = p_.I_p * p_.I_g / (p_.I_p * p_.R_g * p_.R_g + p_.I_g * p_.R_p * p_.R_p);
   p_.mesh_damping = 2.0 * options_.mesh_damping_ratio * std::sqrt(p_.mean_mesh_stiffness * me);
-  // Quasi-static torque balance of a half under the mean arms (docs, "Loads"):
-  // T_p = F̄(R_p cos β_b + χ̄_p), T_g = F̄(R_g cos β_b + χ̄_g).
+  // Quasi-static torque balance of a half under the mean arms and the mean impact pulse
+  // F̄_s = (2/π)·F_s·τ/T (docs, "Loads"): T_p = F̄(R_p cos β_b + χ̄_p) + R_p F̄_s,
+  // T_g = F̄(R_g cos β_b + χ̄_g) + R_g F̄_s. F_s grows with √F̄: a fixed-point iteration.
   const double cb = std::cos(p_.beta_b);
   p_.T_p = 0.5 * operating.pinion_torque;
   p_.static_force = p_.T_p / (p_.R_p * cb + mesh_.mean().chi_pinion);
-  p_.T_g = p_.static_force * (p_.R_g * cb + mesh_.mean().chi_wheel);
+  double mean_impact = 0.0;
   if (options_.mesh_in_impact) {
     // Mesh-in impact (seed 000 eq. 6) with the first-order corner-contact velocity of the
     // page: v_s = ω_g·√(2·δ̄·T1T2·ρ_2A/ρ_1A), δ̄ = F̄/k̄; q_s = 1/k_m at mesh-in.
     const auto& path = geometry.path();
-    const double delta_static = p_.static_force / p_.mean_mesh_stiffness;
-    p_.impact_velocity = p_.omega_g * std::sqrt(2.0 * delta_static * path.T2 * (path.T2 - path.A) / path.A);
     const double k_in = mesh_.at(0.0, 1e-9 * p_.period).stiffness;
-    p_.impact_force = p_.impact_velocity * std::sqrt(me * k_in);
     p_.impact_duration = pi * std::sqrt(me / k_in);
     if (p_.impact_duration >= p_.period)
       throw InputError(fmt::format("mesh_in_impact: the pulse lasts {:.4g} s, longer than a mesh cycle ({:.4g} s); "
                                    "set it false at this speed", p_.impact_duration, p_.period));
+    for (int iteration = 0; iteration < 50; ++iteration) {
+      const double delta_static = p_.static_force / p_.mean_mesh_stiffness;
+      p_.impact_velocity = p_.omega_g * std::sqrt(2.0 * delta_static * path.T2 * (path.T2 - path.A) / path.A);
+      p_.impact_force = p_.impact_velocity * std::sqrt(me * k_in);
+      mean_impact = 2.0 / pi * p_.impact_force * p_.impact_duration / p_.period;
+      p_.static_force = (p_.T_p - p_.R_p * mean_impact) / (p_.R_p * cb + mesh_.mean().chi_pinion);
+    }
+    if (!(p_.static_force > 0.0))
+      throw InputError(fmt::format("mesh_in_impact: the mean impact pulse ({:.4g} N) would carry the whole load", mean_impact));
   }
+  p_.mean_impact_force = mean_impact;
+  p_.T_g = p_.static_force * (p_.R_g * cb + mesh_.mean().chi_wheel) + p_.R_g * mean_impact;
 }
 
 double Herringbone12Dynamics::impact_force(int half, double t, double t_mid) const {
@@ -232,8 +241,8 @@ std::vector<double> Herringbone12Dynamics::static_state() const {
     load(index(h, TP)) += mesh_.mean().chi_pinion;
     load(index(h, TG)) -= mesh_.mean().chi_wheel;
     K += p_.mean_mesh_stiffness * load * v.transpose();
-    f(index(h, TP)) = p_.T_p;
-    f(index(h, TG)) = -p_.T_g;
+    f(index(h, TP)) = p_.T_p - p_.R_p * p_.mean_impact_force;
+    f(index(h, TG)) = -p_.T_g + p_.R_g * p_.mean_impact_force;
   }
   std::vector<int> keep;
   for (int i = 0; i < 12; ++i)

@@ -54,6 +54,7 @@ struct Herringbone12Parameters {
   double mesh_damping = 0;                   ///< c_m at k̄ [N·s/m]
   double static_force = 0;                   ///< F̄_n per half [N]
   double impact_velocity = 0, impact_force = 0, impact_duration = 0;  ///< eq. 6 pulse
+  double mean_impact_force = 0;              ///< F̄_s = (2/π)·F_s·τ/T [N]
   double period = 0;                         ///< T_mesh [s]
   std::array<double, 2> clock_offset{};      ///< half h's mesh clock is t + clock_offset[h]
 };
@@ -99,7 +100,7 @@ class Herringbone12Dynamics {
   static constexpr std::size_t state_size = 28;
   /// dy/dt of the page's equations (pair sets and impact pulses of the interval holding t_mid).
   void derivative(double t, double t_mid, const double* y, double* dydt) const;
-  /// The quasi-static state under the mean stiffness and arms (rates and work zero; the
+  /// The quasi-static state under the mean stiffness, arms and impact pulse (rates and work zero; the
   /// left wheel half at θ = 0).
   [[nodiscard]] std::vector<double> static_state() const;
   [[nodiscard]] std::vector<double> natural_frequencies(std::vector<std::vector<double>>* shapes = nullptr) const;
