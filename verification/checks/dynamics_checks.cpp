@@ -8,9 +8,7 @@
 #include <map>
 
 #include "check_registry.h"
-#include "dynamics/herringbone12_dynamics.h"
 #include "dynamics/spur6_dynamics.h"
-#include "ode/herringbone12_rk4.h"
 #include "ode/spur6_rk4.h"
 
 namespace gearbench::verification {
@@ -175,133 +173,6 @@ const RegisterCheck eigen_vs_fft(CheckSpec{
         return std::abs(x - f_peak) < std::abs(y - f_peak);
       });
       return CheckValue{f_peak, nearest, {{"natural_frequencies_Hz", modes}}};
-    }});
-
-// --- 12-DOF herringbone ------------------------------------------------------------------
-
-const char* herringbone_section = "Gear dynamics (12-DOF herringbone)";
-
-DynamicsCase seed000(const CheckContext& ctx) {
-  const auto c = ctx.gear_case("seed000_herringbone_dynamics.json");
-  return {c.gear_pair, *c.materials, *c.operating};
-}
-
-/// The options of cases/seed000_herringbone_dynamics.json (the defaults, μ = 0.05).
-dynamics::Herringbone12Options seed000_options() {
-  dynamics::Herringbone12Options o;
-  o.mesh.friction_coefficient = 0.05;
-  return o;
-}
-
-// With β = 0, no groove coupling and the pinion held axially, each half is the 6-DOF spur
-// model of the same half: the left half's δ must follow spur6's (seed 003 pair, μ = 0.06,
-// 10 mesh cycles from the static state, both CVODE at rtol 1e-8).
-const RegisterCheck herringbone_reduces_to_spur(CheckSpec{
-    .id = "herringbone12.reduces_to_spur6", .section = herringbone_section, .solver = solver,
-    .reference = "6-DOF spur model (spur6)",
-    .quantity = "max |δ_left − δ_spur6| / p2p(δ_spur6), β = 0, halves uncoupled, 10 mesh cycles",
-    .unit = "-", .tolerance = {1e-5, 0},
-    .justification = "two CVODE runs at rtol 1e-8 on different state vectors and step sequences: their "
-                     "global errors (~1e-7 of the peak-to-peak, see dynamics.rk4) differ; 1e-5 leaves room",
-    .tier = Tier::fast, .run = [](const CheckContext& ctx) {
-      const auto c = seed003(ctx);
-      const geometry::GearPairGeometry g(c.pair);
-      Spur6Options spur;
-      spur.runup_cycles = 0;
-      spur.record_cycles = 10;
-      const auto s = Spur6Dynamics(g, c.materials, c.operating, spur).solve();
-      dynamics::Herringbone12Options o;
-      o.radial_stiffness = o.axial_stiffness = spur.bearing_stiffness;
-      o.radial_damping = o.axial_damping = spur.bearing_damping;
-      o.floating_pinion = false;
-      o.groove_stiffness = 0.0;
-      o.twist_stiffness = 0.0;
-      o.groove_damping = o.twist_damping = 0.0;
-      o.mesh_in_impact = false;
-      o.mesh_damping_ratio = spur.mesh_damping_ratio;
-      o.mesh.friction_coefficient = spur.friction_coefficient;
-      o.runup_cycles = 0;
-      o.record_cycles = 10;
-      auto operating = c.operating;
-      operating.pinion_torque *= 2.0;  // each half carries the spur pair's torque
-      const auto h = dynamics::Herringbone12Dynamics(g, c.materials, operating, o).solve();
-      double worst = 0.0, halves = 0.0;
-      for (std::size_t i = 0; i < s.time.size(); ++i) {
-        worst = std::max(worst, std::abs(h.transmission_error[0][i] - s.transmission_error[i]));
-        halves = std::max(halves, std::abs(h.transmission_error[0][i] - h.transmission_error[1][i]));
-      }
-      return CheckValue{worst / s.te.peak_to_peak, 0.0,
-                        {{"halves_difference", halves / s.te.peak_to_peak}, {"samples", s.time.size()}}};
-    }});
-
-/// The reference's plain parameters from the production model; the mesh excitation of a
-/// half (k_m, χ) is the shared input, the equations are not.
-reference::Herringbone12Parameters herringbone_reference(const dynamics::Herringbone12Dynamics& d) {
-  const auto& p = d.parameters();
-  const auto& mesh = d.mesh();
-  return {p.m_p, p.m_g, p.I_p, p.I_g, p.R_p, p.R_g, p.beta_b, p.k_radial, p.c_radial, p.k_axial_p, p.c_axial_p,
-          p.k_axial_g, p.c_axial_g, p.k_groove, p.c_groove, p.k_twist, p.c_twist, p.T_p, p.T_g,
-          p.mean_mesh_stiffness, p.mesh_damping, p.impact_force, p.impact_duration, p.period, p.clock_offset,
-          [&mesh](double tau) {
-            const auto m = mesh.at(tau, tau);
-            return reference::HalfMeshValue{m.stiffness, m.chi_pinion, m.chi_wheel};
-          }};
-}
-
-// Seed 000 pair with friction, mesh-in impacts and the right half a quarter cycle behind:
-// 10 mesh cycles from the static state, CVODE (Adams, rtol 1e-8) against RK4 at 2048 steps a cycle.
-const RegisterCheck herringbone_rk4(CheckSpec{
-    .id = "herringbone12.rk4.transmission_error", .section = herringbone_section, .solver = solver,
-    .reference = "independent RK4 (reference/ode/herringbone12_rk4)",
-    .quantity = "max over halves |δ_CVODE − δ_RK4| / p2p(δ) over 10 mesh cycles", .unit = "-",
-    .tolerance = {1e-5, 0},
-    .justification = "RK4 at 2048 steps a cycle (ω_max·h ≈ 0.1, error ~1e-8 of the response) against CVODE "
-                     "at rtol 1e-8: 1e-5 of the peak-to-peak leaves room for CVODE's global error growth",
-    .tier = Tier::fast, .run = [](const CheckContext& ctx) {
-      const auto c = seed000(ctx);
-      const geometry::GearPairGeometry g(c.pair);
-      auto o = seed000_options();
-      o.half_offset = 0.25;
-      o.runup_cycles = 0;
-      o.record_cycles = 10;
-      const dynamics::Herringbone12Dynamics d(g, c.materials, c.operating, o);
-      const auto r = d.solve();
-      const auto p = herringbone_reference(d);
-      reference::Herringbone12State y0{};
-      const auto s = d.static_state();
-      std::copy(s.begin(), s.begin() + 24, y0.begin());
-      const double T = p.period;
-      const auto ref = reference::herringbone12_rk4(p, y0, 10.0 * T, T / 2048.0, T / o.samples_per_cycle);
-      double worst = 0.0;
-      for (std::size_t h = 0; h < 2; ++h)
-        for (std::size_t i = 0; i < r.time.size() && i < ref.size(); ++i)
-          worst = std::max(worst, std::abs(r.transmission_error[h][i] - ref[i].delta[h]) / r.te[h].peak_to_peak);
-      return CheckValue{worst, 0.0, {{"samples", std::min(r.time.size(), ref.size())}, {"cvode_steps", r.steps}}};
-    }});
-
-// Over 4 mesh cycles after a 40-cycle run-up: ΔE = W_in − W_out − D_damping − D_friction +
-// W_parametric + W_impact (docs/dynamics-model.md, "Energy balance"), the works integrated by
-// CVODE with the motion.
-const RegisterCheck herringbone_energy(CheckSpec{
-    .id = "herringbone12.energy_balance", .section = herringbone_section, .solver = solver,
-    .reference = "energy balance of the equations of motion",
-    .quantity = "|ΔE − (W_in − W_out − D − D_f + W_k + W_s)| / (D + D_f) over 4 steady mesh cycles",
-    .unit = "-", .tolerance = {1e-6, 0},
-    .justification = "the works are integrated with the motion at rtol 1e-8; W_in and W_out are ~100× the "
-                     "dissipation, so their 1e-8 errors appear as ~1e-6 of it",
-    .tier = Tier::fast, .run = [](const CheckContext& ctx) {
-      const auto c = seed000(ctx);
-      const geometry::GearPairGeometry g(c.pair);
-      auto o = seed000_options();
-      o.runup_cycles = 40;
-      o.record_cycles = 4;
-      const auto r = dynamics::Herringbone12Dynamics(g, c.materials, c.operating, o).solve();
-      const auto& e = r.energy;
-      if (!(e.friction > 0.0 && e.damping > 0.0)) throw std::runtime_error("friction or damping produced energy");
-      return CheckValue{std::abs(e.residual), 0.0,
-                        {{"input_J", e.input}, {"output_J", e.output}, {"damping_J", e.damping},
-                         {"friction_J", e.friction}, {"parametric_J", e.parametric}, {"impact_J", e.impact},
-                         {"energy_change_J", e.energy_change}}};
     }});
 
 // --- Seed 003 reproduction ---------------------------------------------------------------
