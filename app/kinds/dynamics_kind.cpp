@@ -122,6 +122,12 @@ std::optional<Sweep> read_sweep(model::ObjectReader& root) {
   return w;
 }
 
+json energy_json(const dynamics::EnergyBalance& e) {
+  return {{"input", e.input}, {"output", e.output}, {"damping", e.damping}, {"friction", e.friction},
+          {"parametric", e.parametric}, {"impact", e.impact}, {"energy_change", e.energy_change},
+          {"relative_residual", e.residual}};
+}
+
 json spur6_result(const dynamics::Spur6Dynamics& solver, const dynamics::Spur6Result& r) {
   const auto& p = solver.parameters();
   return {
@@ -139,6 +145,8 @@ json spur6_result(const dynamics::Spur6Dynamics& solver, const dynamics::Spur6Re
       {"mesh_frequency_Hz", r.mesh_frequency},
       {"natural_frequencies_Hz", r.natural_frequencies},
       {"spectrum", {{"frequency_Hz", r.spectrum_frequency}, {"transmission_error_amplitude_m", r.spectrum_te}}},
+      {"energy_balance_J", energy_json(r.energy)},
+      {"load_torque_Nm", p.T2},
       {"parameters", {{"masses_kg", {p.m1, p.m2}}, {"inertias_kg_m2", {p.I1, p.I2}},
                       {"mean_mesh_stiffness_N_per_m", p.mean_mesh_stiffness},
                       {"mesh_damping_N_s_per_m", p.mesh_damping}}},
@@ -149,7 +157,6 @@ json spur6_result(const dynamics::Spur6Dynamics& solver, const dynamics::Spur6Re
 
 json herringbone12_result(const dynamics::Herringbone12Dynamics& solver, const dynamics::Herringbone12Result& r) {
   const auto& p = solver.parameters();
-  const auto& e = r.energy;
   return {
       {"kind", "dynamics"},
       {"model", "herringbone12"},
@@ -169,9 +176,7 @@ json herringbone12_result(const dynamics::Herringbone12Dynamics& solver, const d
       {"natural_frequencies_Hz", r.natural_frequencies},
       {"mode_shapes", r.mode_shapes},
       {"spectrum", {{"frequency_Hz", r.spectrum_frequency}, {"transmission_error_left_amplitude_m", r.spectrum_te}}},
-      {"energy_balance_J", {{"input", e.input}, {"output", e.output}, {"damping", e.damping}, {"friction", e.friction},
-                            {"parametric", e.parametric}, {"impact", e.impact}, {"energy_change", e.energy_change},
-                            {"relative_residual", e.residual}}},
+      {"energy_balance_J", energy_json(r.energy)},
       {"parameters", {{"masses_per_half_kg", {p.m_p, p.m_g}}, {"inertias_per_half_kg_m2", {p.I_p, p.I_g}},
                       {"base_helix_angle_deg", p.beta_b * 180.0 / M_PI},
                       {"mean_mesh_stiffness_per_half_N_per_m", p.mean_mesh_stiffness},

@@ -59,13 +59,6 @@ struct Herringbone12Parameters {
   std::array<double, 2> clock_offset{};      ///< half h's mesh clock is t + clock_offset[h]
 };
 
-/// Work over the recorded window [J]: the page's balance
-/// ΔE = W_in − W_out − D_damping − D_friction + W_parametric + W_impact.
-struct EnergyBalance {
-  double input = 0, output = 0, damping = 0, friction = 0, parametric = 0, impact = 0, energy_change = 0;
-  double residual = 0;  ///< (ΔE − right-hand side) / (D_damping + D_friction)
-};
-
 struct Herringbone12Result {
   std::vector<double> time;                                ///< [s] from the start of recording
   std::array<std::vector<double>, 2> transmission_error;   ///< δ_h along the normal [m]

@@ -62,6 +62,7 @@ struct Spur6Result {
   std::vector<double> natural_frequencies;   ///< [Hz], mean-stiffness system, non-zero
   double mesh_frequency = 0.0;               ///< [Hz]
   double periodicity = 0.0;                  ///< max |δ(t) − δ(t − period)| / p2p over the last period
+  EnergyBalance energy;                      ///< over the recorded window
   long steps = 0, rhs_evaluations = 0;
   double seconds = 0.0;
 };
@@ -76,6 +77,8 @@ class Spur6Dynamics {
   /// Single-pair stiffness k_pair(s) [N/m] of a healthy pair, or of the cracked tooth's
   /// pair with its crack acting or not (decided for a whole interval by its midpoint).
   [[nodiscard]] double pair_stiffness(double s, bool cracked_tooth = false, bool crack_acting = false) const;
+  /// Size of the state: 6 coordinates, 6 rates, 3 work accumulators (damping, friction, stiffness).
+  static constexpr std::size_t state_size = 15;
   /// dy/dt of the page's equations for the pair set of the interval holding t_mid.
   void derivative(double t, double t_mid, const double* y, double* dydt) const;
   /// The static state of docs/dynamics-model.md.
@@ -86,10 +89,12 @@ class Spur6Dynamics {
 
  private:
   struct MeshState {
-    double force = 0.0, friction = 0.0, moment1 = 0.0, moment2 = 0.0, delta = 0.0;
+    double force = 0.0, friction = 0.0, moment1 = 0.0, moment2 = 0.0, delta = 0.0, delta_rate = 0.0;
+    double stiffness = 0.0, stiffness_rate = 0.0, damping = 0.0;  ///< Σk_j, Σdk_j/dt, Σc_j
   };
   [[nodiscard]] MeshState mesh(double t, double t_mid, const double* y) const;
   [[nodiscard]] std::vector<double> switch_times(double t0, double t1) const;
+  [[nodiscard]] double energy(double t, double t_mid, const double* y) const;
 
   const geometry::GearPairGeometry& geometry_;
   Spur6Options options_;
