@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <iostream>
+#include <tuple>
 
 #include "dynamics/herringbone12_dynamics.h"
 #include "dynamics/spur6_dynamics.h"
@@ -195,11 +196,20 @@ json herringbone12_result(const dynamics::Herringbone12Dynamics& solver, const d
 template <class Solve>
 json run_sweep(const Sweep& w, model::OperatingPoint operating, Solve solve) {
   json out = {{"speed_rpm", json::array()}, {"mesh_frequency_Hz", json::array()},
-              {"dynamic_factor", json::array()}, {"transmission_error_rms_m", json::array()}};
+              {"dynamic_factor", json::array()}, {"transmission_error_rms_m", json::array()},
+              {"skipped", json::array()}};
   for (int i = 0; i < w.points; ++i) {
     const double rpm = w.from + (w.to - w.from) * i / (w.points - 1);
     operating.pinion_speed = rpm * M_PI / 30.0;
-    const auto [mesh_frequency, factor, te_rms] = solve(operating);
+    double mesh_frequency = 0.0, factor = 0.0, te_rms = 0.0;
+    try {
+      std::tie(mesh_frequency, factor, te_rms) = solve(operating);
+    } catch (const InputError& e) {  // a point the model cannot run (e.g. the impact pulse carries the load)
+      std::cerr << fmt::format("gearbench: speed sweep {}/{}: {:.1f} rpm skipped: {}", i + 1, w.points, rpm, e.what())
+                << std::endl;
+      out["skipped"].push_back({{"speed_rpm", rpm}, {"reason", e.what()}});
+      continue;
+    }
     std::cerr << fmt::format("gearbench: speed sweep {}/{}: {:.1f} rpm, mesh {:.1f} Hz, dynamic factor {:.4f}",
                              i + 1, w.points, rpm, mesh_frequency, factor) << std::endl;
     out["speed_rpm"].push_back(rpm);

@@ -121,9 +121,10 @@ Herringbone12Dynamics::Herringbone12Dynamics(const geometry::GearPairGeometry& g
       p_.impact_force = p_.impact_velocity * std::sqrt(me * k_in);
       mean_impact = 2.0 / pi * p_.impact_force * p_.impact_duration / p_.period;
       p_.static_force = (p_.T_p - p_.R_p * mean_impact) / (p_.R_p * cb + mesh_.mean().chi_pinion);
+      if (!(p_.static_force > 0.0))
+        throw InputError(fmt::format("mesh_in_impact: at {:.6g} rpm the mean impact pulse ({:.4g} N) would carry the "
+                                     "whole load; set it false", operating.pinion_speed * 30.0 / pi, mean_impact));
     }
-    if (!(p_.static_force > 0.0))
-      throw InputError(fmt::format("mesh_in_impact: the mean impact pulse ({:.4g} N) would carry the whole load", mean_impact));
   }
   p_.mean_impact_force = mean_impact;
   p_.T_g = p_.static_force * (p_.R_g * cb + mesh_.mean().chi_wheel) + p_.R_g * mean_impact;
