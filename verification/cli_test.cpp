@@ -375,7 +375,7 @@ TEST(Cli, DynamicsRunsAndValidates) {
   EXPECT_GT(r["dynamic_factor"].get<double>(), 1.0);
   EXPECT_EQ(r["natural_frequencies_Hz"].size(), 5u);
   const std::pair<std::function<void(json&)>, std::string> bad[] = {
-      {[](json& c) { c["model"] = "herringbone12"; }, "model = \"herringbone12\": allowed values are spur6"},
+      {[](json& c) { c["model"] = "spur7"; }, "model = \"spur7\": allowed values are spur6, herringbone12"},
       {[](json& c) { c["friction"]["mu"] = 0.9; }, "friction.mu = 0.9: allowed range is [0, 0.5]"},
       {[](json& c) { c.erase("operating"); }, "operating: missing required key"},
       {[](json& c) { c["gear_pair"]["helix_angle_deg"] = 10; }, "gear_pair.helix_angle_deg = 10: model \"spur6\" needs 0"},
@@ -386,6 +386,37 @@ TEST(Cli, DynamicsRunsAndValidates) {
     auto c = j;
     edit(c);
     const auto e = run_gearbench("run " + write_case("dynamics_bad_" + std::to_string(n++), c.dump()));
+    EXPECT_EQ(e.exit_code, 2) << e.err;
+    EXPECT_NE(e.err.find(expected), std::string::npos) << e.err;
+  }
+}
+
+TEST(Cli, HerringboneDynamicsRunsSweepsAndValidates) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed000_herringbone_dynamics.json");
+  auto j = json::parse(in);
+  j["runup_cycles"] = 2;
+  j["record_cycles"] = 2;
+  j["mesh"] = {{"slices", 20}, {"positions", 90}};
+  j["speed_sweep_rpm"] = {{"from", 1000}, {"to", 2000}, {"points", 2}};
+  const auto o = run_gearbench("run " + write_case("herringbone_short", j.dump()));
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  EXPECT_EQ(r["model"], "herringbone12");
+  EXPECT_EQ(r["transmission_error_m"]["left"].size(), 2u * 64u + 1u);
+  EXPECT_EQ(r["natural_frequencies_Hz"].size(), 11u);  // 12 DOF, one rigid rotation
+  EXPECT_EQ(r["speed_sweep"]["dynamic_factor"].size(), 2u);
+  EXPECT_NE(o.err.find("speed sweep 2/2"), std::string::npos) << o.err;  // progress on stderr
+  const std::pair<std::function<void(json&)>, std::string> bad[] = {
+      {[](json& c) { c["bearings"]["floating_pinion"] = "yes"; }, "bearings.floating_pinion = \"yes\": must be true or false"},
+      {[](json& c) { c["groove_coupling"]["axial_stiffness_N_per_m"] = -1; }, "groove_coupling.axial_stiffness_N_per_m"},
+      {[](json& c) { c["mesh"]["harmonics"] = 60; }, "mesh.harmonics = 60"},
+      {[](json& c) { c["speed_sweep_rpm"]["to"] = 500; }, "speed_sweep_rpm.to = 500"},
+  };
+  int n = 0;
+  for (const auto& [edit, expected] : bad) {
+    auto c = j;
+    edit(c);
+    const auto e = run_gearbench("run " + write_case("herringbone_bad_" + std::to_string(n++), c.dump()));
     EXPECT_EQ(e.exit_code, 2) << e.err;
     EXPECT_NE(e.err.find(expected), std::string::npos) << e.err;
   }

@@ -1,7 +1,11 @@
-// Case kind "dynamics": 6-DOF spur-pair dynamics on SUNDIALS CVODE (model "spur6").
+// Case kind "dynamics": 6-DOF spur-pair (model "spur6") and 12-DOF herringbone (model
+// "herringbone12") dynamics on SUNDIALS CVODE, optionally swept over speed.
 #include <cmath>
 #include <fmt/format.h>
+#include <iostream>
+#include <tuple>
 
+#include "dynamics/herringbone12_dynamics.h"
 #include "dynamics/spur6_dynamics.h"
 #include "crack_section.h"
 #include "kind_registry.h"
@@ -14,9 +18,28 @@ namespace {
 using nlohmann::json;
 using model::Range;
 
+dynamics::CvodeOptions read_integrator(model::ObjectReader& root, dynamics::CvodeOptions o) {
+  if (!root.has("integrator")) return o;
+  auto i = root.object("integrator");
+  o.method = i.optional_string("method", {"adams", "bdf"}).value_or("adams") == "bdf" ? dynamics::CvodeMethod::bdf
+                                                                                       : dynamics::CvodeMethod::adams;
+  o.relative_tolerance = i.optional_number("rtol", {1e-14, 1e-2}).value_or(o.relative_tolerance);
+  o.absolute_tolerance = i.optional_number("atol", {1e-20, 1e-2}).value_or(o.absolute_tolerance);
+  i.finish();
+  return o;
+}
+
+/// An optional true/false key of `object` (read through `reader`, which then knows it).
+std::optional<bool> optional_bool(model::ObjectReader& reader, const json& object, const std::string& key) {
+  if (!reader.has(key)) return std::nullopt;
+  reader.accept(key);
+  if (!object.at(key).is_boolean())
+    throw InputError(fmt::format("{} = {}: must be true or false", reader.key_path(key), object.at(key).dump()));
+  return object.at(key).get<bool>();
+}
+
 dynamics::Spur6Options read_options(model::ObjectReader& root) {
   dynamics::Spur6Options o;
-  root.optional_string("model", {"spur6"});
   if (root.has("bearings")) {
     auto b = root.object("bearings");
     o.bearing_stiffness = b.optional_number("stiffness_N_per_m", Range::positive(1e15), "N/m").value_or(o.bearing_stiffness);
@@ -33,34 +56,80 @@ dynamics::Spur6Options read_options(model::ObjectReader& root) {
   o.runup_cycles = root.optional_integer("runup_cycles", 0, 1000000).value_or(o.runup_cycles);
   o.record_cycles = root.optional_integer("record_cycles", 2, 1000000).value_or(o.record_cycles);
   o.samples_per_cycle = root.optional_integer("samples_per_cycle", 8, 4096).value_or(o.samples_per_cycle);
-  if (root.has("integrator")) {
-    auto i = root.object("integrator");
-    o.integrator.method = i.optional_string("method", {"adams", "bdf"}).value_or("adams") == "bdf"
-                              ? dynamics::CvodeMethod::bdf : dynamics::CvodeMethod::adams;
-    o.integrator.relative_tolerance = i.optional_number("rtol", {1e-14, 1e-2}).value_or(o.integrator.relative_tolerance);
-    o.integrator.absolute_tolerance = i.optional_number("atol", {1e-20, 1e-2}).value_or(o.integrator.absolute_tolerance);
-    i.finish();
-  }
+  o.integrator = read_integrator(root, o.integrator);
   return o;
 }
 
-json stats_json(const dynamics::Spur6Result::Stats& s) {
+dynamics::Herringbone12Options read_herringbone_options(model::ObjectReader& root, const json& case_json) {
+  dynamics::Herringbone12Options o;
+  if (root.has("bearings")) {
+    auto b = root.object("bearings");
+    o.radial_stiffness = b.optional_number("radial_stiffness_N_per_m", Range::positive(1e15), "N/m").value_or(o.radial_stiffness);
+    o.radial_damping = b.optional_number("radial_damping_N_s_per_m", Range::closed(0.0, 1e9), "N*s/m").value_or(o.radial_damping);
+    o.axial_stiffness = b.optional_number("axial_stiffness_N_per_m", Range::positive(1e15), "N/m").value_or(o.axial_stiffness);
+    o.axial_damping = b.optional_number("axial_damping_N_s_per_m", Range::closed(0.0, 1e9), "N*s/m").value_or(o.axial_damping);
+    o.floating_pinion = optional_bool(b, case_json.at("bearings"), "floating_pinion").value_or(o.floating_pinion);
+    b.finish();
+  }
+  if (root.has("groove_coupling")) {
+    auto c = root.object("groove_coupling");
+    o.groove_stiffness = c.optional_number("axial_stiffness_N_per_m", Range::closed(0.0, 1e15), "N/m");
+    o.groove_damping = c.optional_number("axial_damping_N_s_per_m", Range::closed(0.0, 1e9), "N*s/m").value_or(o.groove_damping);
+    o.twist_stiffness = c.optional_number("torsional_stiffness_N_m_per_rad", Range::closed(0.0, 1e15), "N*m/rad");
+    o.twist_damping = c.optional_number("torsional_damping_N_m_s_per_rad", Range::closed(0.0, 1e9), "N*m*s/rad")
+                          .value_or(o.twist_damping);
+    c.finish();
+  }
+  if (root.has("mesh")) {
+    auto m = root.object("mesh");
+    o.mesh.slices = m.optional_integer("slices", 1, 10000).value_or(o.mesh.slices);
+    o.mesh.positions = m.optional_integer("positions", 16, 100000).value_or(o.mesh.positions);
+    o.mesh.harmonics = m.optional_integer("harmonics", 1, 50000).value_or(o.mesh.harmonics);
+    m.finish();
+  }
+  o.mesh_damping_ratio = root.optional_number("mesh_damping_ratio", Range::closed(0.0, 1.0)).value_or(o.mesh_damping_ratio);
+  if (root.has("friction")) {
+    auto f = root.object("friction");
+    o.mesh.friction_coefficient = f.number("mu", Range::closed(0.0, 0.5));
+    f.finish();
+  }
+  o.mesh_in_impact = optional_bool(root, case_json, "mesh_in_impact").value_or(o.mesh_in_impact);
+  o.half_offset = root.optional_number("half_offset_cycles", Range::closed(0.0, 1.0)).value_or(o.half_offset);
+  o.runup_cycles = root.optional_integer("runup_cycles", 0, 1000000).value_or(o.runup_cycles);
+  o.record_cycles = root.optional_integer("record_cycles", 2, 1000000).value_or(o.record_cycles);
+  o.samples_per_cycle = root.optional_integer("samples_per_cycle", 8, 4096).value_or(o.samples_per_cycle);
+  o.integrator = read_integrator(root, o.integrator);
+  return o;
+}
+
+json stats_json(const dynamics::ResponseStats& s) {
   return {{"mean", s.mean}, {"rms", s.rms}, {"peak_to_peak", s.peak_to_peak}};
 }
 
-json run_dynamics(const json& case_json) {
-  model::ObjectReader root(case_json, "");
-  root.string("kind");
-  root.optional_string("description");
-  const auto gear_case = model::read_gear_case(root);
-  if (!gear_case.materials) throw InputError("materials: missing required key (kind dynamics)");
-  if (!gear_case.operating) throw InputError("operating: missing required key (kind dynamics)");
-  auto options = read_options(root);
-  root.finish();
+/// "speed_sweep_rpm": {"from", "to", "points"}, pinion speeds, equally spaced.
+struct Sweep {
+  double from = 0, to = 0;
+  int points = 0;
+};
 
-  const geometry::GearPairGeometry geometry(gear_case.gear_pair);
-  const dynamics::Spur6Dynamics solver(geometry, *gear_case.materials, *gear_case.operating, options);
-  const auto r = solver.solve();
+std::optional<Sweep> read_sweep(model::ObjectReader& root) {
+  if (!root.has("speed_sweep_rpm")) return std::nullopt;
+  auto s = root.object("speed_sweep_rpm");
+  Sweep w{s.number("from", Range::positive(1e6), "rpm"), s.number("to", Range::positive(1e6), "rpm"),
+          s.integer("points", 2, 10000)};
+  s.finish();
+  if (!(w.to > w.from))
+    throw InputError(fmt::format("speed_sweep_rpm.to = {}: must be above speed_sweep_rpm.from = {}", w.to, w.from));
+  return w;
+}
+
+json energy_json(const dynamics::EnergyBalance& e) {
+  return {{"input", e.input}, {"output", e.output}, {"damping", e.damping}, {"friction", e.friction},
+          {"parametric", e.parametric}, {"impact", e.impact}, {"energy_change", e.energy_change},
+          {"relative_residual", e.residual}};
+}
+
+json spur6_result(const dynamics::Spur6Dynamics& solver, const dynamics::Spur6Result& r) {
   const auto& p = solver.parameters();
   return {
       {"kind", "dynamics"},
@@ -77,6 +146,8 @@ json run_dynamics(const json& case_json) {
       {"mesh_frequency_Hz", r.mesh_frequency},
       {"natural_frequencies_Hz", r.natural_frequencies},
       {"spectrum", {{"frequency_Hz", r.spectrum_frequency}, {"transmission_error_amplitude_m", r.spectrum_te}}},
+      {"energy_balance_J", energy_json(r.energy)},
+      {"load_torque_Nm", p.T2},
       {"parameters", {{"masses_kg", {p.m1, p.m2}}, {"inertias_kg_m2", {p.I1, p.I2}},
                       {"mean_mesh_stiffness_N_per_m", p.mean_mesh_stiffness},
                       {"mesh_damping_N_s_per_m", p.mesh_damping}}},
@@ -85,7 +156,110 @@ json run_dynamics(const json& case_json) {
   };
 }
 
-const RegisterKind dynamics_kind({"dynamics", "6-DOF spur-pair dynamics on SUNDIALS CVODE", run_dynamics});
+json herringbone12_result(const dynamics::Herringbone12Dynamics& solver, const dynamics::Herringbone12Result& r) {
+  const auto& p = solver.parameters();
+  return {
+      {"kind", "dynamics"},
+      {"model", "herringbone12"},
+      {"time_s", r.time},
+      {"transmission_error_m", {{"left", r.transmission_error[0]}, {"right", r.transmission_error[1]}}},
+      {"mesh_force_N", {{"left", r.mesh_force[0]}, {"right", r.mesh_force[1]}}},
+      {"friction_torque_pinion_Nm", {{"left", r.friction_torque[0]}, {"right", r.friction_torque[1]}}},
+      {"axial_float_m", r.axial_float},
+      {"bearing_force_pinion_left_N", r.bearing_force_pinion},
+      {"statistics", {{"transmission_error_left_m", stats_json(r.te[0])}, {"transmission_error_right_m", stats_json(r.te[1])},
+                      {"mesh_force_left_N", stats_json(r.force[0])}, {"mesh_force_right_N", stats_json(r.force[1])},
+                      {"axial_float_m", stats_json(r.float_stats)}}},
+      {"static_mesh_force_per_half_N", r.static_mesh_force},
+      {"dynamic_factor", r.dynamic_factor},
+      {"load_torque_Nm", r.load_torque},
+      {"mesh_frequency_Hz", r.mesh_frequency},
+      {"natural_frequencies_Hz", r.natural_frequencies},
+      {"mode_shapes", r.mode_shapes},
+      {"spectrum", {{"frequency_Hz", r.spectrum_frequency}, {"transmission_error_left_amplitude_m", r.spectrum_te}}},
+      {"energy_balance_J", energy_json(r.energy)},
+      {"parameters", {{"masses_per_half_kg", {p.m_p, p.m_g}}, {"inertias_per_half_kg_m2", {p.I_p, p.I_g}},
+                      {"base_helix_angle_deg", p.beta_b * 180.0 / M_PI},
+                      {"mean_mesh_stiffness_per_half_N_per_m", p.mean_mesh_stiffness},
+                      {"mesh_damping_N_s_per_m", p.mesh_damping}, {"groove_axial_stiffness_N_per_m", p.k_groove},
+                      {"groove_torsional_stiffness_N_m_per_rad", p.k_twist},
+                      {"impact", {{"velocity_m_per_s", p.impact_velocity}, {"peak_force_N", p.impact_force},
+                                  {"duration_s", p.impact_duration}}}}},
+      {"diagnostics", {{"steps", r.steps}, {"rhs_evaluations", r.rhs_evaluations}, {"seconds", r.seconds},
+                       {"periodicity", r.periodicity}, {"slicing_consistency", solver.mesh().slicing_consistency()},
+                       {"harmonic_truncation", solver.mesh().truncation()}}},
+  };
+}
+
+/// Dynamic factor and rms transmission error against pinion speed; one line per point on
+/// stderr (the CLI's progress, not the solver's).
+template <class Solve>
+json run_sweep(const Sweep& w, model::OperatingPoint operating, Solve solve) {
+  json out = {{"speed_rpm", json::array()}, {"mesh_frequency_Hz", json::array()},
+              {"dynamic_factor", json::array()}, {"transmission_error_rms_m", json::array()},
+              {"skipped", json::array()}};
+  for (int i = 0; i < w.points; ++i) {
+    const double rpm = w.from + (w.to - w.from) * i / (w.points - 1);
+    operating.pinion_speed = rpm * M_PI / 30.0;
+    double mesh_frequency = 0.0, factor = 0.0, te_rms = 0.0;
+    try {
+      std::tie(mesh_frequency, factor, te_rms) = solve(operating);
+    } catch (const InputError& e) {  // a point the model cannot run (e.g. the impact pulse carries the load)
+      std::cerr << fmt::format("gearbench: speed sweep {}/{}: {:.1f} rpm skipped: {}", i + 1, w.points, rpm, e.what())
+                << std::endl;
+      out["skipped"].push_back({{"speed_rpm", rpm}, {"reason", e.what()}});
+      continue;
+    }
+    std::cerr << fmt::format("gearbench: speed sweep {}/{}: {:.1f} rpm, mesh {:.1f} Hz, dynamic factor {:.4f}",
+                             i + 1, w.points, rpm, mesh_frequency, factor) << std::endl;
+    out["speed_rpm"].push_back(rpm);
+    out["mesh_frequency_Hz"].push_back(mesh_frequency);
+    out["dynamic_factor"].push_back(factor);
+    out["transmission_error_rms_m"].push_back(te_rms);
+  }
+  return out;
+}
+
+json run_dynamics(const json& case_json) {
+  model::ObjectReader root(case_json, "");
+  root.string("kind");
+  root.optional_string("description");
+  const auto gear_case = model::read_gear_case(root);
+  if (!gear_case.materials) throw InputError("materials: missing required key (kind dynamics)");
+  if (!gear_case.operating) throw InputError("operating: missing required key (kind dynamics)");
+  const std::string model_name = root.optional_string("model", {"spur6", "herringbone12"}).value_or("spur6");
+  const geometry::GearPairGeometry geometry(gear_case.gear_pair);
+  const auto& materials = *gear_case.materials;
+  json result;
+  std::optional<Sweep> sweep;
+  if (model_name == "spur6") {
+    const auto options = read_options(root);
+    sweep = read_sweep(root);
+    root.finish();
+    const dynamics::Spur6Dynamics solver(geometry, materials, *gear_case.operating, options);
+    result = spur6_result(solver, solver.solve());
+    if (sweep)
+      result["speed_sweep"] = run_sweep(*sweep, *gear_case.operating, [&](const model::OperatingPoint& op) {
+        const auto r = dynamics::Spur6Dynamics(geometry, materials, op, options).solve();
+        return std::tuple{r.mesh_frequency, r.dynamic_factor, r.te.rms};
+      });
+  } else {
+    const auto options = read_herringbone_options(root, case_json);
+    sweep = read_sweep(root);
+    root.finish();
+    const dynamics::Herringbone12Dynamics solver(geometry, materials, *gear_case.operating, options);
+    result = herringbone12_result(solver, solver.solve());
+    if (sweep)
+      result["speed_sweep"] = run_sweep(*sweep, *gear_case.operating, [&](const model::OperatingPoint& op) {
+        const auto r = dynamics::Herringbone12Dynamics(geometry, materials, op, options).solve();
+        return std::tuple{r.mesh_frequency, r.dynamic_factor, r.te[0].rms};
+      });
+  }
+  return result;
+}
+
+const RegisterKind dynamics_kind(
+    {"dynamics", "6-DOF spur-pair and 12-DOF herringbone dynamics on SUNDIALS CVODE", run_dynamics});
 
 }  // namespace
 }  // namespace gearbench::app

@@ -65,13 +65,13 @@ struct ContactSet {
   std::vector<Pair> pairs;
 };
 
-// The page's pairs at time t: every j ≥ 0 with s_j ≤ E, and λ_j = +1 before the pitch
-// point C, −1 after it, 0 on it.
+// The page's pairs at time t: every j ≥ 0 with s_j ≤ E, and λ_j = −1 before the pitch
+// point C, +1 after it, 0 on it.
 ContactSet contact_set_at(const Spur6Parameters& p, double t) {
   ContactSet set{t, wrap(p.contact_speed * t, p.pbt), {}};
   for (int j = 0; p.A + set.phase + j * p.pbt <= p.E; ++j) {
     const double s = p.A + set.phase + j * p.pbt;
-    set.pairs.push_back({j, s < p.C ? 1.0 : (s > p.C ? -1.0 : 0.0)});
+    set.pairs.push_back({j, s > p.C ? 1.0 : (s < p.C ? -1.0 : 0.0)});
   }
   return set;
 }
@@ -123,6 +123,33 @@ MeshLoads mesh_loads(const Spur6Parameters& p, const ContactSet& set, double t,
   return loads;
 }
 
+// ---- Section "Loads": the quasi-static torque balance ----------------------------------
+
+// F̄ = T1/(R_b1 + ā1) and T2 = F̄·(R_b2 + ā2), ā_i the mean over the N = 720 mesh positions
+// u·t = (i + ½)·p_bt/N of μ·Σλ_j·k_j·ρ_ij / Σk_j with ρ_1j = s_j, ρ_2j = T1T2 − s_j.
+using Loads = Spur6Loads;
+
+Loads quasi_static_loads(const Spur6Parameters& p) {
+  constexpr int positions = 720;
+  double arm1 = 0.0, arm2 = 0.0;
+  for (int i = 0; i < positions; ++i) {
+    const double t = (i + 0.5) * p.pbt / positions / p.contact_speed;
+    const ContactSet set = contact_set_at(p, t);
+    double k = 0.0, k_arm1 = 0.0, k_arm2 = 0.0;
+    for (const Pair& pair : set.pairs) {
+      const double s = position(p, set, pair, t);
+      const double kj = p.pair_stiffness(s);
+      k += kj;
+      k_arm1 += kj * pair.lambda * s;
+      k_arm2 += kj * pair.lambda * (p.T1T2 - s);
+    }
+    arm1 += p.mu * k_arm1 / k / positions;
+    arm2 += p.mu * k_arm2 / k / positions;
+  }
+  const double force = p.T1 / (p.rb1 + arm1);
+  return {force, force * (p.rb2 + arm2)};
+}
+
 // ---- Section "Equations of motion" (seed eq. 12) --------------------------------------
 
 // −c·q̇ − k·q of a bearing coordinate.
@@ -130,10 +157,10 @@ double bearing_force(const Spur6State& y, std::size_t i, double k, double c) {
   return -c * y[i + rate] - k * y[i];
 }
 
-Spur6State equations_of_motion(const Spur6Parameters& p, const ContactSet& set, double t,
-                               const Spur6State& y) {
+Spur6State equations_of_motion(const Spur6Parameters& p, const Loads& loads, const ContactSet& set,
+                               double t, const Spur6State& y) {
   const MeshLoads f = mesh_loads(p, set, t, y);
-  const double T2 = p.T1 * p.rb2 / p.rb1;
+  const double T2 = loads.T2;
   Spur6State dy{};
   for (std::size_t i = 0; i < rate; ++i) dy[i] = y[i + rate];
   dy[X1 + rate] = (bearing_force(y, X1, p.k1, p.c1) - f.mesh) / p.m1;
@@ -154,26 +181,26 @@ Spur6State advanced(const Spur6State& y, double h, const Spur6State& dy) {
   return result;
 }
 
-void rk4_step(const Spur6Parameters& p, const ContactSet& set, double t, double h,
+void rk4_step(const Spur6Parameters& p, const Loads& loads, const ContactSet& set, double t, double h,
               Spur6State& y) {
-  const Spur6State d1 = equations_of_motion(p, set, t, y);
-  const Spur6State d2 = equations_of_motion(p, set, t + h / 2, advanced(y, h / 2, d1));
-  const Spur6State d3 = equations_of_motion(p, set, t + h / 2, advanced(y, h / 2, d2));
-  const Spur6State d4 = equations_of_motion(p, set, t + h, advanced(y, h, d3));
+  const Spur6State d1 = equations_of_motion(p, loads, set, t, y);
+  const Spur6State d2 = equations_of_motion(p, loads, set, t + h / 2, advanced(y, h / 2, d1));
+  const Spur6State d3 = equations_of_motion(p, loads, set, t + h / 2, advanced(y, h / 2, d2));
+  const Spur6State d4 = equations_of_motion(p, loads, set, t + h, advanced(y, h, d3));
   for (std::size_t i = 0; i < y.size(); ++i)
     y[i] += h / 6 * (d1[i] + 2 * d2[i] + 2 * d3[i] + d4[i]);
 }
 
 // From a to b (no switch strictly inside) in equal steps of at most dt, with the pair set
 // of the midpoint: the right-hand limit of the pair set at a, the left-hand one at b.
-void integrate_interval(const Spur6Parameters& p, double a, double b, double dt,
+void integrate_interval(const Spur6Parameters& p, const Loads& loads, double a, double b, double dt,
                         Spur6State& y) {
   const ContactSet set = contact_set_at(p, (a + b) / 2);
   const auto steps = static_cast<std::size_t>(
       std::max(1.0, std::ceil((b - a) / dt - relative_slack)));
   const double h = (b - a) / static_cast<double>(steps);
   for (std::size_t i = 0; i < steps; ++i)
-    rk4_step(p, set, a + static_cast<double>(i) * h, h, y);
+    rk4_step(p, loads, set, a + static_cast<double>(i) * h, h, y);
 }
 
 // ---- The times the integrator steps onto ----------------------------------------------
@@ -229,7 +256,7 @@ Spur6State spur6_static_state(const Spur6Parameters& p) {
   validate(p);
   require_positive(p.k1, "k1");
   require_positive(p.k2, "k2");
-  const double F0 = p.T1 / p.rb1;
+  const double F0 = quasi_static_loads(p).force;
   const double delta0 = F0 / p.mean_mesh_stiffness;
   Spur6State y{};
   y[X1] = -F0 / p.k1;
@@ -238,9 +265,18 @@ Spur6State spur6_static_state(const Spur6Parameters& p) {
   return y;
 }
 
-Spur6State spur6_derivative(const Spur6Parameters& p, double t, const Spur6State& y) {
+Spur6Loads spur6_loads(const Spur6Parameters& p) {
   validate(p);
-  return equations_of_motion(p, contact_set_at(p, t), t, y);
+  return quasi_static_loads(p);
+}
+
+Spur6State spur6_derivative(const Spur6Parameters& p, double t, const Spur6State& y) {
+  return spur6_derivative(p, spur6_loads(p), t, y);
+}
+
+Spur6State spur6_derivative(const Spur6Parameters& p, const Spur6Loads& loads, double t, const Spur6State& y) {
+  validate(p);
+  return equations_of_motion(p, loads, contact_set_at(p, t), t, y);
 }
 
 std::vector<Spur6Sample> spur6_rk4(const Spur6Parameters& p, const Spur6State& y0,
@@ -256,8 +292,9 @@ std::vector<Spur6Sample> spur6_rk4(const Spur6Parameters& p, const Spur6State& y
   std::vector<Spur6Sample> samples{make_sample(p, 0.0, y)};
   if (t_end == 0.0) return samples;
   const std::vector<Breakpoint> points = breakpoints(p, t_end, dt, sample_every);
+  const Loads loads = quasi_static_loads(p);
   for (std::size_t i = 1; i < points.size(); ++i) {
-    integrate_interval(p, points[i - 1].t, points[i].t, dt, y);
+    integrate_interval(p, loads, points[i - 1].t, points[i].t, dt, y);
     if (points[i].sample) samples.push_back(make_sample(p, points[i].t, y));
   }
   return samples;

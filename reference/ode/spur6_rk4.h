@@ -23,7 +23,7 @@ struct Spur6Parameters {
   double m1, m2, I1, I2;          ///< masses [kg] and polar inertias [kg·m²]
   double rb1, rb2;                ///< base radii R_b1, R_b2 [m]
   double k1, k2, c1, c2;          ///< bearing stiffness [N/m] and damping [N·s/m], x and y
-  double T1;                      ///< input torque [N·m]; the load is T2 = T1·R_b2/R_b1
+  double T1;                      ///< input torque [N·m]; the load T2 follows from the page's section "Loads"
   double mu;                      ///< friction coefficient μ
   double zeta_mesh;               ///< mesh damping ratio ζ_m
   double mean_mesh_stiffness;     ///< k̄ [N/m]
@@ -35,15 +35,26 @@ struct Spur6Parameters {
 /// q = [x1, y1, θ1, x2, y2, θ2] followed by q̇ (θ as deviations from the nominal rotation).
 using Spur6State = std::array<double, 12>;
 
-/// The page's initial state (section "Initial state"): static deflection δ0 = F0/k̄ under
-/// F0 = T1/R_b1, bearings deflected by ∓F0/k_i, θ2 = 0, all rates zero. Throws
+/// The page's initial state (section "Initial state"): static deflection δ0 = F̄/k̄ under
+/// the quasi-static force F̄ of section "Loads", bearings deflected by ∓F̄/k_i, θ2 = 0, all
+/// rates zero. Throws
 /// std::invalid_argument for invalid parameters or non-positive bearing stiffness.
 Spur6State spur6_static_state(const Spur6Parameters& p);
+
+/// The page's section "Loads": the quasi-static mesh force F̄ = T1/(R_b1 + ā1) [N] and the
+/// load torque T2 = F̄·(R_b2 + ā2) [N·m].
+struct Spur6Loads {
+  double force;
+  double T2;
+};
+Spur6Loads spur6_loads(const Spur6Parameters& p);
 
 /// dy/dt = [q̇, q̈] of the page's equations of motion at time t, with the pairs in contact at t
 /// exactly as the page defines them (s_j = A + mod(u·t, p_bt) + j·p_bt ≤ E). Throws
 /// std::invalid_argument for invalid parameters.
 Spur6State spur6_derivative(const Spur6Parameters& p, double t, const Spur6State& y);
+/// The same with the loads computed once by the caller.
+Spur6State spur6_derivative(const Spur6Parameters& p, const Spur6Loads& loads, double t, const Spur6State& y);
 
 /// One recorded state with the mesh quantities at that instant (page's pair set at t).
 struct Spur6Sample {

@@ -1,7 +1,6 @@
 #include "spur6_dynamics.h"
 
 #include <Eigen/Dense>
-#include <fftw3.h>
 
 #include <algorithm>
 #include <chrono>
@@ -93,6 +92,22 @@ Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
     for (const double t : geometry_.positions_in_contact(s0)) sum += pair_stiffness(t);
   }
   p_.mean_mesh_stiffness = sum / samples;
+  // Quasi-static torque balance under the mean friction arms (docs/dynamics-model.md,
+  // "Loads"): ā_i = mean over u·t = (i + ½)·p_bt/N of μ·Σλ_j·k_j·ρ_ij / Σk_j.
+  double arm1 = 0.0, arm2 = 0.0;
+  for (int i = 0; i < samples; ++i) {
+    double k_sum = 0.0, k1 = 0.0, k2 = 0.0;
+    for (const double t : geometry_.positions_in_contact(p_.A + p_.pbt * (i + 0.5) / samples)) {
+      const double kj = pair_stiffness(t), lambda = t > p_.C ? 1.0 : (t < p_.C ? -1.0 : 0.0);
+      k_sum += kj;
+      k1 += kj * lambda * t;
+      k2 += kj * lambda * (p_.T1T2 - t);
+    }
+    arm1 += p_.mu * k1 / k_sum / samples;
+    arm2 += p_.mu * k2 / k_sum / samples;
+  }
+  p_.static_force = p_.T1 / (p_.rb1 + arm1);
+  p_.T2 = p_.static_force * (p_.rb2 + arm2);
   const double me = p_.I1 * p_.I2 / (p_.I1 * p_.rb2 * p_.rb2 + p_.I2 * p_.rb1 * p_.rb1);
   p_.mesh_damping = 2.0 * p_.zeta_mesh * std::sqrt(p_.mean_mesh_stiffness * me);
 }
@@ -115,6 +130,7 @@ Spur6Dynamics::MeshState Spur6Dynamics::mesh(double t, double t_mid, const doubl
   const double delta_rate = y[6] + p_.rb1 * y[8] - y[9] - p_.rb2 * y[11];
   MeshState m;
   m.delta = delta;
+  m.delta_rate = delta_rate;
   for (int j = 0; j < 3; ++j) {
     const double s_mid = p_.A + u * t_mid - n * p_.pbt + j * p_.pbt;
     if (s_mid < p_.A || s_mid > p_.E) continue;
@@ -124,9 +140,16 @@ Spur6Dynamics::MeshState Spur6Dynamics::mesh(double t, double t_mid, const doubl
     // A pitch crack acts once the contact is above its mouth; a root crack always.
     const bool acting = cracked && (options_.crack->crack.type == stiffness::Crack::Type::root || s_mid > p_.crack_mouth);
     const double k = pair_stiffness(s, cracked, acting);
-    const double force = k * delta + p_.mesh_damping * k / p_.mean_mesh_stiffness * delta_rate;
+    const double c = p_.mesh_damping * k / p_.mean_mesh_stiffness;
+    const double force = k * delta + c * delta_rate;
+    // dk/dt = u·dk/ds by a central difference, one-sided at the path's ends.
+    const double h = 1e-6 * (p_.E - p_.A);
+    const double lo = std::max(p_.A, s - h), hi = std::min(p_.E, s + h);
+    m.stiffness += k;
+    m.damping += c;
+    m.stiffness_rate += u * (pair_stiffness(hi, cracked, acting) - pair_stiffness(lo, cracked, acting)) / (hi - lo);
     // The sliding direction of the whole interval (intervals end where a pair passes C).
-    const double lambda = s_mid < p_.C ? 1.0 : (s_mid > p_.C ? -1.0 : 0.0);
+    const double lambda = s_mid > p_.C ? 1.0 : (s_mid < p_.C ? -1.0 : 0.0);
     m.force += force;
     m.friction += p_.mu * lambda * force;
     m.moment1 += p_.mu * lambda * force * s;
@@ -138,20 +161,36 @@ Spur6Dynamics::MeshState Spur6Dynamics::mesh(double t, double t_mid, const doubl
 // docs/dynamics-model.md, "Equations of motion" (seed 003 eq. 12).
 void Spur6Dynamics::derivative(double t, double t_mid, const double* y, double* dydt) const {
   const MeshState m = mesh(t, t_mid, y);
-  const double T2 = p_.T1 * p_.rb2 / p_.rb1;
   for (int i = 0; i < 6; ++i) dydt[i] = y[6 + i];
   dydt[6] = (-m.force - p_.c_bearing * y[6] - p_.k_bearing * y[0]) / p_.m1;
   dydt[7] = (-m.friction - p_.c_bearing * y[7] - p_.k_bearing * y[1]) / p_.m1;
   dydt[8] = (p_.T1 - p_.rb1 * m.force - m.moment1) / p_.I1;
   dydt[9] = (m.force - p_.c_bearing * y[9] - p_.k_bearing * y[3]) / p_.m2;
   dydt[10] = (m.friction - p_.c_bearing * y[10] - p_.k_bearing * y[4]) / p_.m2;
-  dydt[11] = (p_.rb2 * m.force + m.moment2 - T2) / p_.I2;
+  dydt[11] = (p_.rb2 * m.force + m.moment2 - p_.T2) / p_.I2;
+  // The works of the energy balance (docs/dynamics-model.md, "Energy balance").
+  const double w1 = p_.contact_speed / p_.rb1, w2 = w1 * p_.rb1 / p_.rb2;
+  double bearings = 0.0;
+  for (const int i : {6, 7, 9, 10}) bearings += p_.c_bearing * y[i] * y[i];
+  dydt[12] = bearings + m.damping * m.delta_rate * m.delta_rate;
+  dydt[13] = m.moment1 * (w1 + y[8]) - m.moment2 * (w2 + y[11]) - m.friction * (y[10] - y[7]);
+  dydt[14] = 0.5 * m.stiffness_rate * m.delta * m.delta;
+}
+
+// E = ½Σm·q̇² + ½Σ I·(Ω + θ̇)² + ½k_b·Σq² + ½Σk_j·δ².
+double Spur6Dynamics::energy(double t, double t_mid, const double* y) const {
+  const double w1 = p_.contact_speed / p_.rb1, w2 = w1 * p_.rb1 / p_.rb2;
+  const MeshState m = mesh(t, t_mid, y);
+  double e = p_.m1 * (y[6] * y[6] + y[7] * y[7]) + p_.m2 * (y[9] * y[9] + y[10] * y[10]);
+  e += p_.I1 * (w1 + y[8]) * (w1 + y[8]) + p_.I2 * (w2 + y[11]) * (w2 + y[11]);
+  for (const int i : {0, 1, 3, 4}) e += p_.k_bearing * y[i] * y[i];
+  return 0.5 * (e + m.stiffness * m.delta * m.delta);
 }
 
 std::vector<double> Spur6Dynamics::static_state() const {
-  const double F0 = p_.T1 / p_.rb1;
+  const double F0 = p_.static_force;
   const double delta0 = F0 / p_.mean_mesh_stiffness;
-  std::vector<double> y(12, 0.0);
+  std::vector<double> y(state_size, 0.0);
   y[0] = -F0 / p_.k_bearing;
   y[3] = F0 / p_.k_bearing;
   y[2] = (delta0 - y[0] + y[3]) / p_.rb1;
@@ -194,41 +233,6 @@ std::vector<double> Spur6Dynamics::natural_frequencies() const {
   return f;
 }
 
-namespace {
-
-Spur6Result::Stats statistics(const std::vector<double>& v) {
-  Spur6Result::Stats s;
-  const double n = static_cast<double>(v.size());
-  s.mean = std::accumulate(v.begin(), v.end(), 0.0) / n;
-  double sq = 0.0;
-  for (double x : v) sq += x * x;
-  s.rms = std::sqrt(sq / n);
-  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-  s.peak_to_peak = *hi - *lo;
-  return s;
-}
-
-/// One-sided amplitude spectrum of v − mean(v) by FFTW (no window: the record holds whole periods).
-void amplitude_spectrum(const std::vector<double>& v, double dt, std::vector<double>& f, std::vector<double>& a) {
-  const int n = static_cast<int>(v.size());
-  std::vector<double> in(v);
-  const double mean = std::accumulate(in.begin(), in.end(), 0.0) / n;
-  for (auto& x : in) x -= mean;
-  std::vector<std::complex<double>> out(static_cast<std::size_t>(n / 2 + 1));
-  fftw_plan plan = fftw_plan_dft_r2c_1d(n, in.data(), reinterpret_cast<fftw_complex*>(out.data()), FFTW_ESTIMATE);
-  fftw_execute(plan);
-  fftw_destroy_plan(plan);
-  f.resize(out.size());
-  a.resize(out.size());
-  for (std::size_t k = 0; k < out.size(); ++k) {
-    f[k] = static_cast<double>(k) / (n * dt);
-    const bool unpaired = k == 0 || 2 * static_cast<int>(k) == n;  // DC and Nyquist have no mirror
-    a[k] = (unpaired ? 1.0 : 2.0) * std::abs(out[k]) / n;
-  }
-}
-
-}  // namespace
-
 Spur6Result Spur6Dynamics::solve() const {
   const auto start = std::chrono::steady_clock::now();
   const bool cracked = options_.crack && options_.crack->crack.length > 0.0;
@@ -243,17 +247,23 @@ Spur6Result Spur6Dynamics::solve() const {
   const auto samples = static_cast<std::size_t>(record) * static_cast<std::size_t>(options_.samples_per_cycle);
 
   double t_mid = 0.0;
-  CvodeIntegrator integrator(12, [&](double t, const double* y, double* dydt) { derivative(t, t_mid, y, dydt); },
+  CvodeIntegrator integrator(state_size, [&](double t, const double* y, double* dydt) { derivative(t, t_mid, y, dydt); },
                              options_.integrator);
   Spur6Result r;
-  r.static_mesh_force = p_.T1 / p_.rb1;
+  r.static_mesh_force = p_.static_force;
   r.mesh_frequency = 1.0 / T_mesh;
   std::vector<double> y = static_state();
   std::vector<double> breaks = switch_times(0.0, t_end);
   breaks.push_back(t_end);
   double a = 0.0;
   std::size_t next_sample = 0;
+  std::vector<double> y_record;
+  double e_record = 0.0;
   auto record_sample = [&](double t, const std::vector<double>& state) {
+    if (next_sample == 0) {
+      y_record = state;
+      e_record = energy(t, t_mid, state.data());
+    }
     const MeshState m = mesh(t, t_mid, state.data());
     r.time.push_back(t - t_record);
     r.transmission_error.push_back(m.delta);
@@ -261,7 +271,9 @@ Spur6Result Spur6Dynamics::solve() const {
     r.friction_force.push_back(m.friction);
     r.bearing_force_x1.push_back(p_.k_bearing * state[0] + p_.c_bearing * state[6]);
   };
-  for (const double b : breaks) {
+  double jumps = 0.0;  // ½Σ Δk_j·δ² where pairs enter and leave inside the window
+  for (std::size_t i = 0; i < breaks.size(); ++i) {
+    const double b = breaks[i];
     t_mid = 0.5 * (a + b);
     integrator.reset(a, y);
     // Sample times that coincide with a switch time up to rounding are taken at the switch:
@@ -280,11 +292,23 @@ Spur6Result Spur6Dynamics::solve() const {
       ++next_sample;
     }
     if (b > reached + tiny) y = integrator.advance(b, b);
+    if (i + 1 < breaks.size() && b > t_record - tiny)
+      jumps += energy(b, 0.5 * (b + breaks[i + 1]), y.data()) - energy(b, t_mid, y.data());
     r.steps += integrator.steps();
     r.rhs_evaluations += integrator.rhs_evaluations();
     a = b;
   }
 
+  auto& e = r.energy;
+  const double w1 = p_.contact_speed / p_.rb1, w2 = w1 * p_.rb1 / p_.rb2, window = t_end - t_record;
+  e.input = p_.T1 * (w1 * window + y[2] - y_record[2]);
+  e.output = p_.T2 * (w2 * window + y[5] - y_record[5]);
+  e.damping = y[12] - y_record[12];
+  e.friction = y[13] - y_record[13];
+  e.parametric = y[14] - y_record[14] + jumps;
+  e.energy_change = energy(t_end, t_mid, y.data()) - e_record;
+  e.residual = (e.energy_change - (e.input - e.output - e.damping - e.friction + e.parametric)) /
+               (e.damping + e.friction);
   r.te = statistics(r.transmission_error);
   r.force = statistics(r.mesh_force);
   r.friction = statistics(r.friction_force);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cvode_integrator.h"
+#include "response_analysis.h"
 #include "geometry/gear_pair_geometry.h"
 #include "model/materials.h"
 #include "stiffness/cubic_spline.h"
@@ -38,6 +39,8 @@ struct Spur6Options {
 struct Spur6Parameters {
   double m1 = 0, m2 = 0, I1 = 0, I2 = 0, rb1 = 0, rb2 = 0;
   double k_bearing = 0, c_bearing = 0, T1 = 0, mu = 0, zeta_mesh = 0;
+  double T2 = 0;            ///< load torque of the quasi-static balance [N·m]
+  double static_force = 0;  ///< F̄ = T1/(R_b1 + ā1) [N]
   double mean_mesh_stiffness = 0, mesh_damping = 0;
   double A = 0, C = 0, E = 0, T1T2 = 0, pbt = 0, contact_speed = 0;
   double crack_mouth = 0;  ///< s where a pitch crack starts to act (the pinion's reference point)
@@ -50,15 +53,16 @@ struct Spur6Result {
   std::vector<double> mesh_force;            ///< F_m [N]
   std::vector<double> friction_force;        ///< F_f [N]
   std::vector<double> bearing_force_x1;      ///< pinion bearing, along the line of action [N]
-  double static_mesh_force = 0.0;            ///< F0 = T1/R_b1 [N]
+  double static_mesh_force = 0.0;            ///< F̄ = T1/(R_b1 + ā1) [N]
   double dynamic_factor = 0.0;               ///< max F_m / F0
-  struct Stats { double mean = 0, rms = 0, peak_to_peak = 0; };
+  using Stats = ResponseStats;
   Stats te, force, friction;
   std::vector<double> spectrum_frequency;    ///< [Hz]
   std::vector<double> spectrum_te;           ///< amplitude of δ [m]
   std::vector<double> natural_frequencies;   ///< [Hz], mean-stiffness system, non-zero
   double mesh_frequency = 0.0;               ///< [Hz]
   double periodicity = 0.0;                  ///< max |δ(t) − δ(t − period)| / p2p over the last period
+  EnergyBalance energy;                      ///< over the recorded window
   long steps = 0, rhs_evaluations = 0;
   double seconds = 0.0;
 };
@@ -73,6 +77,8 @@ class Spur6Dynamics {
   /// Single-pair stiffness k_pair(s) [N/m] of a healthy pair, or of the cracked tooth's
   /// pair with its crack acting or not (decided for a whole interval by its midpoint).
   [[nodiscard]] double pair_stiffness(double s, bool cracked_tooth = false, bool crack_acting = false) const;
+  /// Size of the state: 6 coordinates, 6 rates, 3 work accumulators (damping, friction, stiffness).
+  static constexpr std::size_t state_size = 15;
   /// dy/dt of the page's equations for the pair set of the interval holding t_mid.
   void derivative(double t, double t_mid, const double* y, double* dydt) const;
   /// The static state of docs/dynamics-model.md.
@@ -83,10 +89,12 @@ class Spur6Dynamics {
 
  private:
   struct MeshState {
-    double force = 0.0, friction = 0.0, moment1 = 0.0, moment2 = 0.0, delta = 0.0;
+    double force = 0.0, friction = 0.0, moment1 = 0.0, moment2 = 0.0, delta = 0.0, delta_rate = 0.0;
+    double stiffness = 0.0, stiffness_rate = 0.0, damping = 0.0;  ///< Σk_j, Σdk_j/dt, Σc_j
   };
   [[nodiscard]] MeshState mesh(double t, double t_mid, const double* y) const;
   [[nodiscard]] std::vector<double> switch_times(double t0, double t1) const;
+  [[nodiscard]] double energy(double t, double t_mid, const double* y) const;
 
   const geometry::GearPairGeometry& geometry_;
   Spur6Options options_;

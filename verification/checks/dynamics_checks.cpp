@@ -66,6 +66,30 @@ const RegisterCheck periodic_steady_state(CheckSpec{
       return CheckValue{r.periodicity, 0.0, {{"dynamic_factor", r.dynamic_factor}}};
     }});
 
+// Over 4 mesh cycles after the 60-cycle run-up, seed 003 pair, μ = 0.06:
+// ΔE = W_in − W_out − D − D_f + W_k (docs/dynamics-model.md, "Energy balance", the spur terms
+// and the friction force on the bearings), the works integrated by CVODE with the motion.
+const RegisterCheck energy_balance(CheckSpec{
+    .id = "dynamics.energy_balance", .section = section, .solver = solver,
+    .reference = "energy balance of the equations of motion",
+    .quantity = "|ΔE − (W_in − W_out − D − D_f + W_k)| / (D + D_f) over 4 steady mesh cycles", .unit = "-",
+    .tolerance = {1e-6, 0},
+    .justification = "the works are integrated with the motion at rtol 1e-8; W_in and W_out are ~30× the "
+                     "dissipation, so their 1e-8 errors appear as ≲1e-6 of it",
+    .tier = Tier::fast, .run = [](const CheckContext& ctx) {
+      const auto c = seed003(ctx);
+      const geometry::GearPairGeometry g(c.pair);
+      Spur6Options o;
+      o.record_cycles = 4;
+      const auto r = Spur6Dynamics(g, c.materials, c.operating, o).solve();
+      const auto& e = r.energy;
+      if (!(e.friction > 0.0 && e.damping > 0.0)) throw std::runtime_error("friction or damping produced energy");
+      return CheckValue{std::abs(e.residual), 0.0,
+                        {{"input_J", e.input}, {"output_J", e.output}, {"damping_J", e.damping},
+                         {"friction_J", e.friction}, {"parametric_J", e.parametric},
+                         {"energy_change_J", e.energy_change}}};
+    }});
+
 // --- Against the independent RK4 ---------------------------------------------------------------
 
 /// The reference's plain parameters from the production model; the pair stiffness is the
@@ -115,7 +139,7 @@ const RegisterCheck rk4_agreement(CheckSpec{
       const double T_mesh = p.pbt / p.contact_speed;
       reference::Spur6State y0{};
       const auto s = d.static_state();
-      std::copy(s.begin(), s.end(), y0.begin());
+      std::copy(s.begin(), s.begin() + 12, y0.begin());
       const auto ref = reference::spur6_rk4(p, y0, 10.0 * T_mesh, T_mesh / 4096.0, T_mesh / o.samples_per_cycle);
       double worst = 0.0;
       for (std::size_t i = 0; i < r.time.size() && i < ref.size(); ++i)
@@ -237,14 +261,18 @@ void register_seed003(const std::string& name, const std::string& quantity, doub
       .recorded = recorded, .recorded_tolerance = 0.02});
 }
 
+// Recorded after the friction sign was corrected (λ = +1 beyond the pitch point, where the
+// pinion flank slides ahead; before, friction fed energy into the pair) and the load torque
+// was balanced against the mean friction arms (docs/dynamics-model.md, "Loads"): 32.24,
+// 15.65 and 41.28 before.
 const bool seed003_checks = [] {
   register_seed003("mesh_force_decrease_2_5mm", "largest drop of the mesh force, 2.5 mm crack", 3.6,
-                   &CrackEffect::force_decrease, 32.24);
+                   &CrackEffect::force_decrease, 29.02);
   register_seed003("friction_force_decrease_2_5mm", "largest drop of the friction force, 2.5 mm crack", 14.8,
-                   &CrackEffect::friction_decrease, 15.65);
+                   &CrackEffect::friction_decrease, 14.61);
   register_seed003("transmission_error_increase_2_5mm",
                    "largest rise of the transmission error, 2.5 mm crack (of its healthy peak)", 12.2,
-                   &CrackEffect::te_increase, 41.28);
+                   &CrackEffect::te_increase, 37.06);
   return true;
 }();
 

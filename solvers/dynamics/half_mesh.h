@@ -1,0 +1,97 @@
+#pragma once
+// The mesh excitation of one helical half of a herringbone pair (docs/dynamics-model.md,
+// "12-DOF herringbone model", sections "Mesh stiffness per half" and "Friction arms"):
+// the time-varying normal mesh stiffness k_m(t) and the friction torque arms χ_p(t), χ_g(t)
+// of seed 000 eq. 5, as functions of the time within a mesh cycle.
+//
+// Helical (β_b > 0): k_m from the face-width slicing of stiffness::MeshStiffness, the arms
+// from the same slices, tabulated over one mesh cycle and represented by their leading mesh
+// harmonics (FFTW): the right-hand side is smooth and needs no restarts, and the steps of
+// the finite slices (near slices × the mesh frequency) are filtered out.
+// Spur (β_b = 0): the transverse pair sum of the 6-DOF model, evaluated directly, with its
+// switch times (a pair enters, leaves, passes the pitch point).
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "geometry/gear_pair_geometry.h"
+#include "model/materials.h"
+#include "stiffness/cubic_spline.h"
+#include "stiffness/pair_stiffness.h"
+
+namespace gearbench::dynamics {
+
+/// k_m and the arms at one instant. χ_p, χ_g [m] include μ: the friction moments are
+/// −F_n·χ_p on the pinion and +F_n·χ_g on the wheel.
+struct MeshPoint {
+  double stiffness = 0.0;  ///< k_m [N/m]
+  double rate = 0.0;       ///< dk_m/dt [N/(m·s)]
+  double chi_pinion = 0.0;
+  double chi_wheel = 0.0;
+};
+
+/// A truncated Fourier series of a periodic table (FFTW): y given at N equally spaced
+/// points from 0 over one period, harmonics 0..H kept.
+class FourierSeries {
+ public:
+  FourierSeries(double period, const std::vector<double>& y, int harmonics);
+  [[nodiscard]] double value(double t) const;
+  [[nodiscard]] double derivative(double t) const;
+  /// Largest |series − table| at the table's points.
+  [[nodiscard]] double max_table_deviation() const { return deviation_; }
+
+ private:
+  double omega_ = 0.0;  ///< 2π/period
+  std::vector<double> a_, b_;  ///< cos and sin coefficients, index = harmonic
+  double deviation_ = 0.0;
+};
+
+struct HalfMeshOptions {
+  int slices = 100;     ///< face-width slices of a helical half
+  int positions = 720;  ///< table points over one mesh cycle (helical)
+  int harmonics = 24;   ///< mesh harmonics kept of the tables (helical); the slicing's steps lie far above
+  double friction_coefficient = 0.0;
+  void validate() const;  ///< InputError naming the key
+};
+
+class HalfMesh {
+ public:
+  /// `geometry` is the herringbone pair (face width per half) or a spur pair; it must
+  /// outlive this object.
+  HalfMesh(const geometry::GearPairGeometry& geometry, const std::array<model::Material, 2>& materials,
+           double pinion_speed, HalfMeshOptions options);
+
+  /// The excitation at time t of the half's own mesh clock (t = 0: a pair enters at A on
+  /// the front face), the pair set of the interval holding t_mid (spur; ignored helical).
+  [[nodiscard]] MeshPoint at(double t, double t_mid) const;
+  /// Times in (t0, t1) of the half's own clock where the excitation jumps (spur only).
+  [[nodiscard]] std::vector<double> switch_times(double t0, double t1) const;
+  [[nodiscard]] double period() const { return period_; }
+  [[nodiscard]] double mean_stiffness() const { return mean_.stiffness; }
+  [[nodiscard]] const MeshPoint& mean() const { return mean_; }
+  /// Largest relative difference between MeshStiffness's slicing and the slices summed
+  /// here for the arms (helical; 0 for spur).
+  [[nodiscard]] double slicing_consistency() const { return consistency_; }
+  /// Largest deviation of the truncated series of k_m from its table, relative to k̄ (helical).
+  [[nodiscard]] double truncation() const { return truncation_; }
+
+ private:
+  struct Sums {
+    double k = 0.0, k_rho1 = 0.0, k_rho2 = 0.0;  ///< Σk, Σk·λ·ρ1, Σk·λ·ρ2
+    void add(double k_pair, double s, const geometry::PathOfContact& path);
+  };
+  [[nodiscard]] MeshPoint spur_point(double t, double t_mid) const;
+  void build_tables(const std::array<model::Material, 2>& materials);
+
+  const geometry::GearPairGeometry& geometry_;
+  HalfMeshOptions options_;
+  stiffness::PairStiffness pair_;
+  std::optional<stiffness::CubicSpline> pair_curve_;  ///< healthy pair stiffness over A..E, whole face width
+  double speed_ = 0.0;   ///< u = ω1·r_b1 [m/s]
+  double period_ = 0.0;  ///< T_mesh = p_bt/u [s]
+  std::optional<FourierSeries> k_, chi_p_, chi_g_;
+  MeshPoint mean_;
+  double consistency_ = 0.0, truncation_ = 0.0;
+};
+
+}  // namespace gearbench::dynamics

@@ -1,0 +1,419 @@
+#include "herringbone12_dynamics.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <numbers>
+
+#include "model/errors.h"
+
+namespace gearbench::dynamics {
+
+namespace {
+constexpr double pi = std::numbers::pi;
+// Coordinates of half h start at 6h: y_p, z_p, θ_p, y_g, z_g, θ_g; rates at 12 + i;
+// the work accumulators (damping, friction, parametric, impact) at 24..27.
+enum Local : int { YP = 0, ZP = 1, TP = 2, YG = 3, ZG = 4, TG = 5 };
+constexpr int rate = 12;
+constexpr int work = 24;
+constexpr double hand[2] = {1.0, -1.0};  // σ_h: the halves are of opposite hand
+
+int index(int half, Local c) { return 6 * half + c; }
+
+void check_range(double v, double lo, double hi, const char* key) {
+  if (!(v >= lo && v <= hi)) throw InputError(fmt::format("{} = {}: allowed range is [{}, {}]", key, v, lo, hi));
+}
+}  // namespace
+
+void Herringbone12Options::validate() const {
+  check_range(radial_stiffness, 1.0, 1e15, "bearings.radial_stiffness_N_per_m");
+  check_range(radial_damping, 0.0, 1e9, "bearings.radial_damping_N_s_per_m");
+  check_range(axial_stiffness, 1.0, 1e15, "bearings.axial_stiffness_N_per_m");
+  check_range(axial_damping, 0.0, 1e9, "bearings.axial_damping_N_s_per_m");
+  if (groove_stiffness) check_range(*groove_stiffness, 0.0, 1e15, "groove_coupling.axial_stiffness_N_per_m");
+  check_range(groove_damping, 0.0, 1e9, "groove_coupling.axial_damping_N_s_per_m");
+  if (twist_stiffness) check_range(*twist_stiffness, 0.0, 1e15, "groove_coupling.torsional_stiffness_N_m_per_rad");
+  check_range(twist_damping, 0.0, 1e9, "groove_coupling.torsional_damping_N_m_s_per_rad");
+  check_range(mesh_damping_ratio, 0.0, 1.0, "mesh_damping_ratio");
+  check_range(half_offset, 0.0, 1.0, "half_offset_cycles");
+  mesh.validate();
+  if (runup_cycles < 0 || runup_cycles > 1000000)
+    throw InputError(fmt::format("runup_cycles = {}: allowed range is [0, 1000000]", runup_cycles));
+  if (record_cycles < 2 || record_cycles > 1000000)
+    throw InputError(fmt::format("record_cycles = {}: allowed range is [2, 1000000]", record_cycles));
+  if (samples_per_cycle < 8 || samples_per_cycle > 4096)
+    throw InputError(fmt::format("samples_per_cycle = {}: allowed range is [8, 4096]", samples_per_cycle));
+}
+
+Herringbone12Dynamics::Herringbone12Dynamics(const geometry::GearPairGeometry& geometry,
+                                             const std::array<model::Material, 2>& materials,
+                                             const model::OperatingPoint& operating, Herringbone12Options options)
+    : options_((options.validate(), std::move(options))),
+      mesh_(geometry, materials, operating.pinion_speed, options_.mesh) {
+  const auto& pair = geometry.pair();
+  if (pair.helix_angle > 0.0 && !pair.herringbone)
+    throw InputError("gear_pair.herringbone: missing; model \"herringbone12\" needs a herringbone pair "
+                     "(or a spur pair, helix_angle_deg 0)");
+  p_.beta_b = geometry.base_helix_angle();
+  if (options_.floating_pinion && p_.beta_b == 0.0)
+    throw InputError("bearings.floating_pinion = true: a spur pair (helix_angle_deg 0) cannot hold a floating "
+                     "pinion axially; set it false");
+  if (geometry.contact_ratio_transverse() >= 2.0)
+    throw InputError(fmt::format("gear_pair: transverse contact ratio {:.4f}; model \"herringbone12\" allows "
+                                 "[1, 2)", geometry.contact_ratio_transverse()));
+  // One half's blank: a solid disc of the reference diameter and the half's face width.
+  auto disc = [&](int gear, double& m, double& I) {
+    const double r = geometry.radii(gear).reference;
+    m = materials[static_cast<std::size_t>(gear)].density * pi * r * r * pair.face_width;
+    I = 0.5 * m * r * r;
+  };
+  disc(0, p_.m_p, p_.I_p);
+  disc(1, p_.m_g, p_.I_g);
+  p_.R_p = geometry.radii(0).base;
+  p_.R_g = geometry.radii(1).base;
+  p_.k_radial = options_.radial_stiffness;
+  p_.c_radial = options_.radial_damping;
+  p_.k_axial_g = options_.axial_stiffness;
+  p_.c_axial_g = options_.axial_damping;
+  p_.k_axial_p = options_.floating_pinion ? 0.0 : options_.axial_stiffness;
+  p_.c_axial_p = options_.floating_pinion ? 0.0 : options_.axial_damping;
+  // Default groove coupling: a solid shaft of the pinion's root radius over the groove
+  // width, axially E·A/L and in torsion G·J/L (gearbench choice: the seed gives no value).
+  const double groove = pair.herringbone ? pair.herringbone->groove_width : 0.0;
+  const double r_f = geometry.radii(0).root;
+  if ((!options_.groove_stiffness || !options_.twist_stiffness) && !(groove > 0.0))
+    throw InputError("groove_coupling: axial_stiffness_N_per_m and torsional_stiffness_N_m_per_rad are required "
+                     "without a herringbone groove");
+  const double E = materials[0].youngs_modulus, G = E / (2.0 * (1.0 + materials[0].poisson_ratio));
+  p_.k_groove = options_.groove_stiffness.value_or(E * pi * r_f * r_f / groove);
+  p_.k_twist = options_.twist_stiffness.value_or(G * 0.5 * pi * std::pow(r_f, 4) / groove);
+  p_.c_groove = options_.groove_damping;
+  p_.c_twist = options_.twist_damping;
+  p_.omega_p = operating.pinion_speed;
+  p_.omega_g = operating.pinion_speed * p_.R_p / p_.R_g;
+  p_.period = mesh_.period();
+  p_.clock_offset = {0.0, -options_.half_offset * p_.period};
+  p_.mean_mesh_stiffness = mesh_.mean_stiffness();
+  const double me = p_.I_p * p_.I_g / (p_.I_p * p_.R_g * p_.R_g + p_.I_g * p_.R_p * p_.R_p);
+  p_.mesh_damping = 2.0 * options_.mesh_damping_ratio * std::sqrt(p_.mean_mesh_stiffness * me);
+  // Quasi-static torque balance of a half under the mean arms and the mean impact pulse
+  // F̄_s = (2/π)·F_s·τ/T (docs, "Loads"): T_p = F̄(R_p cos β_b + χ̄_p) + R_p F̄_s,
+  // T_g = F̄(R_g cos β_b + χ̄_g) + R_g F̄_s. F_s grows with √F̄: a fixed-point iteration.
+  const double cb = std::cos(p_.beta_b);
+  p_.T_p = 0.5 * operating.pinion_torque;
+  p_.static_force = p_.T_p / (p_.R_p * cb + mesh_.mean().chi_pinion);
+  double mean_impact = 0.0;
+  if (options_.mesh_in_impact) {
+    // Mesh-in impact (seed 000 eq. 6) with the first-order corner-contact velocity of the
+    // page: v_s = ω_g·√(2·δ̄·T1T2·ρ_2A/ρ_1A), δ̄ = F̄/k̄; q_s = 1/k_m at mesh-in.
+    const auto& path = geometry.path();
+    const double k_in = mesh_.at(0.0, 1e-9 * p_.period).stiffness;
+    p_.impact_duration = pi * std::sqrt(me / k_in);
+    if (p_.impact_duration >= p_.period)
+      throw InputError(fmt::format("mesh_in_impact: the pulse lasts {:.4g} s, longer than a mesh cycle ({:.4g} s); "
+                                   "set it false at this speed", p_.impact_duration, p_.period));
+    for (int iteration = 0; iteration < 50; ++iteration) {
+      const double delta_static = p_.static_force / p_.mean_mesh_stiffness;
+      p_.impact_velocity = p_.omega_g * std::sqrt(2.0 * delta_static * path.T2 * (path.T2 - path.A) / path.A);
+      p_.impact_force = p_.impact_velocity * std::sqrt(me * k_in);
+      mean_impact = 2.0 / pi * p_.impact_force * p_.impact_duration / p_.period;
+      p_.static_force = (p_.T_p - p_.R_p * mean_impact) / (p_.R_p * cb + mesh_.mean().chi_pinion);
+      if (!(p_.static_force > 0.0))
+        throw InputError(fmt::format("mesh_in_impact: at {:.6g} rpm the mean impact pulse ({:.4g} N) would carry the "
+                                     "whole load; set it false", operating.pinion_speed * 30.0 / pi, mean_impact));
+    }
+  }
+  p_.mean_impact_force = mean_impact;
+  p_.T_g = p_.static_force * (p_.R_g * cb + mesh_.mean().chi_wheel) + p_.R_g * mean_impact;
+}
+
+double Herringbone12Dynamics::impact_force(int half, double t, double t_mid) const {
+  if (!options_.mesh_in_impact) return 0.0;
+  const double offset = p_.clock_offset[static_cast<std::size_t>(half)];
+  const double n = std::floor((t_mid + offset) / p_.period);
+  if (t_mid + offset - n * p_.period >= p_.impact_duration) return 0.0;
+  const double r = std::clamp(t + offset - n * p_.period, 0.0, p_.impact_duration);
+  return p_.impact_force * std::sin(pi * r / p_.impact_duration);
+}
+
+// docs/dynamics-model.md, "Mesh force per half" (seed 000 eq. 7, base helix angle):
+// δ_h = cos β_b·(y_p − y_g + R_p θ_p − R_g θ_g) + σ_h sin β_b·(z_p − z_g).
+Herringbone12Dynamics::HalfState Herringbone12Dynamics::half_state(int h, double t, double t_mid,
+                                                                 const double* y) const {
+  const double cb = std::cos(p_.beta_b), sb = std::sin(p_.beta_b);
+  auto d = [&](int first) {
+    return cb * (y[first + index(h, YP)] - y[first + index(h, YG)] + p_.R_p * y[first + index(h, TP)] -
+                 p_.R_g * y[first + index(h, TG)]) +
+           hand[h] * sb * (y[first + index(h, ZP)] - y[first + index(h, ZG)]);
+  };
+  HalfState s;
+  const double offset = p_.clock_offset[static_cast<std::size_t>(h)];
+  s.mesh = mesh_.at(t + offset, t_mid + offset);
+  s.delta = d(0);
+  s.delta_rate = d(rate);
+  s.stiffness = s.mesh.stiffness;
+  s.damping = p_.mesh_damping * s.stiffness / p_.mean_mesh_stiffness;
+  s.force = s.stiffness * s.delta + s.damping * s.delta_rate;
+  s.impact = impact_force(h, t, t_mid);
+  return s;
+}
+
+// docs/dynamics-model.md, "Equations of motion" (seed 000 eqs 1–4).
+void Herringbone12Dynamics::derivative(double t, double t_mid, const double* y, double* dydt) const {
+  const double cb = std::cos(p_.beta_b), sb = std::sin(p_.beta_b);
+  for (int i = 0; i < 12; ++i) dydt[i] = y[rate + i];
+  double damping = 0.0, friction = 0.0, parametric = 0.0, impact = 0.0;
+  for (int h = 0; h < 2; ++h) {
+    const int o = 1 - h;  // the other half
+    const HalfState s = half_state(h, t, t_mid, y);
+    const double Fy = cb * s.force, Fz = hand[h] * sb * s.force;
+    auto v = [&](int half, Local c) { return y[rate + index(half, c)]; };
+    auto q = [&](int half, Local c) { return y[index(half, c)]; };
+    dydt[rate + index(h, YP)] = (-Fy - p_.c_radial * v(h, YP) - p_.k_radial * q(h, YP)) / p_.m_p;
+    dydt[rate + index(h, ZP)] = (-Fz - p_.c_axial_p * v(h, ZP) - p_.k_axial_p * q(h, ZP) -
+                                 p_.c_groove * (v(h, ZP) - v(o, ZP)) - p_.k_groove * (q(h, ZP) - q(o, ZP))) / p_.m_p;
+    dydt[rate + index(h, TP)] = (p_.T_p - p_.R_p * Fy - s.force * s.mesh.chi_pinion - p_.R_p * s.impact -
+                                 p_.c_twist * (v(h, TP) - v(o, TP)) - p_.k_twist * (q(h, TP) - q(o, TP))) / p_.I_p;
+    dydt[rate + index(h, YG)] = (Fy - p_.c_radial * v(h, YG) - p_.k_radial * q(h, YG)) / p_.m_g;
+    dydt[rate + index(h, ZG)] = (Fz - p_.c_axial_g * v(h, ZG) - p_.k_axial_g * q(h, ZG) -
+                                 p_.c_groove * (v(h, ZG) - v(o, ZG)) - p_.k_groove * (q(h, ZG) - q(o, ZG))) / p_.m_g;
+    dydt[rate + index(h, TG)] = (p_.R_g * Fy + s.force * s.mesh.chi_wheel - p_.T_g + p_.R_g * s.impact -
+                                 p_.c_twist * (v(h, TG) - v(o, TG)) - p_.k_twist * (q(h, TG) - q(o, TG))) / p_.I_g;
+    // Powers of the page's energy balance (section "Energy balance").
+    damping += p_.c_radial * (v(h, YP) * v(h, YP) + v(h, YG) * v(h, YG)) + p_.c_axial_p * v(h, ZP) * v(h, ZP) +
+               p_.c_axial_g * v(h, ZG) * v(h, ZG) + s.damping * s.delta_rate * s.delta_rate;
+    friction += s.force * (s.mesh.chi_pinion * (p_.omega_p + v(h, TP)) - s.mesh.chi_wheel * (p_.omega_g + v(h, TG)));
+    parametric += 0.5 * s.mesh.rate * s.delta * s.delta;
+    impact += s.impact * (p_.R_g * v(h, TG) - p_.R_p * v(h, TP));
+  }
+  for (const Local c : {ZP, ZG, TP, TG}) {
+    const double dv = y[rate + index(0, c)] - y[rate + index(1, c)];
+    damping += (c == ZP || c == ZG ? p_.c_groove : p_.c_twist) * dv * dv;
+  }
+  dydt[work + 0] = damping;
+  dydt[work + 1] = friction;
+  dydt[work + 2] = parametric;
+  dydt[work + 3] = impact;
+}
+
+// E = ½Σm·q̇² + ½Σ I(Ω + θ̇)² + ½Σ k·q² (bearings, groove) + ½Σ_h k_h(t)·δ_h².
+double Herringbone12Dynamics::energy(double t, double t_mid, const double* y) const {
+  double e = 0.0;
+  for (int h = 0; h < 2; ++h) {
+    auto v = [&](Local c) { return y[rate + index(h, c)]; };
+    auto q = [&](Local c) { return y[index(h, c)]; };
+    e += p_.m_p * (v(YP) * v(YP) + v(ZP) * v(ZP)) + p_.m_g * (v(YG) * v(YG) + v(ZG) * v(ZG));
+    e += p_.I_p * (p_.omega_p + v(TP)) * (p_.omega_p + v(TP)) + p_.I_g * (p_.omega_g + v(TG)) * (p_.omega_g + v(TG));
+    e += p_.k_radial * (q(YP) * q(YP) + q(YG) * q(YG)) + p_.k_axial_p * q(ZP) * q(ZP) + p_.k_axial_g * q(ZG) * q(ZG);
+    const HalfState s = half_state(h, t, t_mid, y);
+    e += s.stiffness * s.delta * s.delta;
+  }
+  for (const Local c : {ZP, ZG, TP, TG}) {
+    const double dq = y[index(0, c)] - y[index(1, c)];
+    e += (c == ZP || c == ZG ? p_.k_groove : p_.k_twist) * dq * dq;
+  }
+  return 0.5 * e;
+}
+
+// K·q = f under the mean stiffness and arms with θ_g = 0 in the left half (the rigid-body
+// rotation; with uncoupled halves, in both), solved by Eigen's full-pivot LU.
+std::vector<double> Herringbone12Dynamics::static_state() const {
+  const double cb = std::cos(p_.beta_b), sb = std::sin(p_.beta_b);
+  Eigen::Matrix<double, 12, 12> K = Eigen::Matrix<double, 12, 12>::Zero();
+  Eigen::Matrix<double, 12, 1> f = Eigen::Matrix<double, 12, 1>::Zero();
+  for (int h = 0; h < 2; ++h) {
+    K(index(h, YP), index(h, YP)) += p_.k_radial;
+    K(index(h, YG), index(h, YG)) += p_.k_radial;
+    K(index(h, ZP), index(h, ZP)) += p_.k_axial_p + p_.k_groove;
+    K(index(h, ZG), index(h, ZG)) += p_.k_axial_g + p_.k_groove;
+    K(index(h, ZP), index(1 - h, ZP)) -= p_.k_groove;
+    K(index(h, ZG), index(1 - h, ZG)) -= p_.k_groove;
+    for (const Local c : {TP, TG}) {
+      K(index(h, c), index(h, c)) += p_.k_twist;
+      K(index(h, c), index(1 - h, c)) -= p_.k_twist;
+    }
+    Eigen::Matrix<double, 12, 1> v = Eigen::Matrix<double, 12, 1>::Zero(), load = v;
+    v(index(h, YP)) = cb, v(index(h, ZP)) = hand[h] * sb, v(index(h, TP)) = cb * p_.R_p;
+    v(index(h, YG)) = -cb, v(index(h, ZG)) = -hand[h] * sb, v(index(h, TG)) = -cb * p_.R_g;
+    load = v;
+    load(index(h, TP)) += mesh_.mean().chi_pinion;
+    load(index(h, TG)) -= mesh_.mean().chi_wheel;
+    K += p_.mean_mesh_stiffness * load * v.transpose();
+    f(index(h, TP)) = p_.T_p - p_.R_p * p_.mean_impact_force;
+    f(index(h, TG)) = -p_.T_g + p_.R_g * p_.mean_impact_force;
+  }
+  std::vector<int> keep;
+  for (int i = 0; i < 12; ++i)
+    if (i != index(0, TG) && (i != index(1, TG) || p_.k_twist > 0.0)) keep.push_back(i);
+  const auto n = static_cast<Eigen::Index>(keep.size());
+  Eigen::MatrixXd Kr(n, n);
+  Eigen::VectorXd fr(n);
+  for (Eigen::Index a = 0; a < n; ++a) {
+    fr(a) = f(keep[static_cast<std::size_t>(a)]);
+    for (Eigen::Index b = 0; b < n; ++b) Kr(a, b) = K(keep[static_cast<std::size_t>(a)], keep[static_cast<std::size_t>(b)]);
+  }
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(Kr);
+  if (lu.rank() < n)
+    throw InputError("bearings: the static problem is singular (an axial coordinate is unrestrained: a floating "
+                     "pinion needs a helical pair)");
+  const Eigen::VectorXd qr = lu.solve(fr);
+  std::vector<double> y(state_size, 0.0);
+  for (Eigen::Index a = 0; a < n; ++a) y[static_cast<std::size_t>(keep[static_cast<std::size_t>(a)])] = qr(a);
+  return y;
+}
+
+std::vector<double> Herringbone12Dynamics::natural_frequencies(std::vector<std::vector<double>>* shapes) const {
+  const double cb = std::cos(p_.beta_b), sb = std::sin(p_.beta_b);
+  Eigen::Matrix<double, 12, 12> M = Eigen::Matrix<double, 12, 12>::Zero(), K = M;
+  for (int h = 0; h < 2; ++h) {
+    M(index(h, YP), index(h, YP)) = M(index(h, ZP), index(h, ZP)) = p_.m_p;
+    M(index(h, YG), index(h, YG)) = M(index(h, ZG), index(h, ZG)) = p_.m_g;
+    M(index(h, TP), index(h, TP)) = p_.I_p;
+    M(index(h, TG), index(h, TG)) = p_.I_g;
+    K(index(h, YP), index(h, YP)) += p_.k_radial;
+    K(index(h, YG), index(h, YG)) += p_.k_radial;
+    K(index(h, ZP), index(h, ZP)) += p_.k_axial_p + p_.k_groove;
+    K(index(h, ZG), index(h, ZG)) += p_.k_axial_g + p_.k_groove;
+    K(index(h, ZP), index(1 - h, ZP)) -= p_.k_groove;
+    K(index(h, ZG), index(1 - h, ZG)) -= p_.k_groove;
+    for (const Local c : {TP, TG}) {
+      K(index(h, c), index(h, c)) += p_.k_twist;
+      K(index(h, c), index(1 - h, c)) -= p_.k_twist;
+    }
+    Eigen::Matrix<double, 12, 1> v = Eigen::Matrix<double, 12, 1>::Zero();
+    v(index(h, YP)) = cb, v(index(h, ZP)) = hand[h] * sb, v(index(h, TP)) = cb * p_.R_p;
+    v(index(h, YG)) = -cb, v(index(h, ZG)) = -hand[h] * sb, v(index(h, TG)) = -cb * p_.R_g;
+    K += p_.mean_mesh_stiffness * v * v.transpose();
+  }
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>> solver(K, M);
+  std::vector<double> f;
+  const double scale = solver.eigenvalues().maxCoeff();
+  for (int i = 0; i < 12; ++i) {
+    if (solver.eigenvalues()(i) <= 1e-10 * scale) continue;
+    f.push_back(std::sqrt(solver.eigenvalues()(i)) / (2.0 * pi));
+    if (shapes) {
+      const auto column = solver.eigenvectors().col(i);
+      shapes->emplace_back(column.data(), column.data() + 12);
+    }
+  }
+  return f;
+}
+
+// Restarts: the halves' spur switches and the start and end of every impact pulse.
+std::vector<double> Herringbone12Dynamics::break_times(double t0, double t1) const {
+  std::vector<double> times;
+  for (int h = 0; h < 2; ++h) {
+    const double offset = p_.clock_offset[static_cast<std::size_t>(h)];
+    for (const double tau : mesh_.switch_times(t0 + offset, t1 + offset)) times.push_back(tau - offset);
+    if (!options_.mesh_in_impact) continue;
+    for (double base = std::floor((t0 + offset) / p_.period) * p_.period; base < t1 + offset + p_.period;
+         base += p_.period)
+      for (const double tau : {base, base + p_.impact_duration})
+        if (tau - offset > t0 && tau - offset < t1) times.push_back(tau - offset);
+  }
+  times.push_back(t1);
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end(),
+                          [this](double a, double b) { return std::abs(a - b) < 1e-12 * p_.period; }),
+              times.end());
+  return times;
+}
+
+Herringbone12Result Herringbone12Dynamics::solve() const {
+  const auto start = std::chrono::steady_clock::now();
+  const double T = p_.period;
+  const double t_record = options_.runup_cycles * T;
+  const double t_end = (options_.runup_cycles + options_.record_cycles) * T;
+  const double dt = T / options_.samples_per_cycle;
+  const auto samples = static_cast<std::size_t>(options_.record_cycles * options_.samples_per_cycle) + 1;
+  double t_mid = 0.0;
+  CvodeIntegrator integrator(state_size, [&](double t, const double* y, double* dydt) { derivative(t, t_mid, y, dydt); },
+                             options_.integrator);
+  Herringbone12Result r;
+  r.static_mesh_force = p_.static_force;
+  r.mesh_frequency = 1.0 / T;
+  r.load_torque = 2.0 * p_.T_g;
+  std::vector<double> y = static_state(), y_record;
+  double a = 0.0, e_record = 0.0;
+  std::size_t next = 0;
+  auto record_sample = [&](double t, const std::vector<double>& state) {
+    r.time.push_back(t - t_record);
+    for (int h = 0; h < 2; ++h) {
+      const HalfState s = half_state(h, t, t_mid, state.data());
+      r.transmission_error[static_cast<std::size_t>(h)].push_back(s.delta);
+      r.mesh_force[static_cast<std::size_t>(h)].push_back(s.force);
+      r.friction_torque[static_cast<std::size_t>(h)].push_back(s.force * s.mesh.chi_pinion);
+    }
+    r.axial_float.push_back(0.5 * (state[index(0, ZP)] + state[index(1, ZP)]));
+    r.bearing_force_pinion.push_back(p_.k_radial * state[index(0, YP)] + p_.c_radial * state[rate + index(0, YP)]);
+    if (next == 0) {
+      y_record = state;
+      e_record = energy(t, t_mid, state.data());
+    }
+  };
+  const double tiny = 1e-9 * dt;
+  double jumps = 0.0;  // ½Σ Δk·δ² where spur pairs enter and leave inside the window
+  const std::vector<double> breaks = break_times(0.0, t_end);
+  for (std::size_t i = 0; i < breaks.size(); ++i) {
+    const double b = breaks[i];
+    t_mid = 0.5 * (a + b);
+    integrator.reset(a, y);
+    double reached = a;
+    // Long stretches go in whole mesh cycles (CVODE's step limit is per call).
+    auto advance_to = [&](double target) {
+      while (target > reached + T) y = integrator.advance(reached += T, b);
+      y = integrator.advance(target, b);
+      reached = target;
+    };
+    while (next < samples) {
+      const double ts = t_record + static_cast<double>(next) * dt;
+      if (ts > b + tiny) break;
+      if (ts > reached + tiny) advance_to(std::min(ts, b));
+      if (ts >= a - tiny) record_sample(ts, y);
+      ++next;
+    }
+    if (b > reached + tiny) advance_to(b);
+    if (i + 1 < breaks.size() && b > t_record - tiny)
+      jumps += energy(b, 0.5 * (b + breaks[i + 1]), y.data()) - energy(b, t_mid, y.data());
+    r.steps += integrator.steps();
+    r.rhs_evaluations += integrator.rhs_evaluations();
+    a = b;
+  }
+  // Energy balance of the recorded window (docs, "Energy balance").
+  auto& e = r.energy;
+  const double window = t_end - t_record;
+  for (int h = 0; h < 2; ++h) {
+    e.input += p_.T_p * (p_.omega_p * window + y[index(h, TP)] - y_record[index(h, TP)]);
+    e.output += p_.T_g * (p_.omega_g * window + y[index(h, TG)] - y_record[index(h, TG)]);
+  }
+  e.damping = y[work + 0] - y_record[work + 0];
+  e.friction = y[work + 1] - y_record[work + 1];
+  e.parametric = y[work + 2] - y_record[work + 2] + jumps;
+  e.impact = y[work + 3] - y_record[work + 3];
+  e.energy_change = energy(t_end, t_mid, y.data()) - e_record;
+  e.residual = (e.energy_change - (e.input - e.output - e.damping - e.friction + e.parametric + e.impact)) /
+               (e.damping + e.friction);
+
+  for (std::size_t h = 0; h < 2; ++h) {
+    r.te[h] = statistics(r.transmission_error[h]);
+    r.force[h] = statistics(r.mesh_force[h]);
+    r.dynamic_factor = std::max(r.dynamic_factor, *std::max_element(r.mesh_force[h].begin(), r.mesh_force[h].end()) /
+                                                      r.static_mesh_force);
+  }
+  r.float_stats = statistics(r.axial_float);
+  // The spectrum and periodicity over whole cycles: the closing sample repeats the first phase.
+  std::vector<double> te(r.transmission_error[0].begin(), r.transmission_error[0].end() - 1);
+  amplitude_spectrum(te, dt, r.spectrum_frequency, r.spectrum_te);
+  r.natural_frequencies = natural_frequencies(&r.mode_shapes);
+  const auto period = static_cast<std::size_t>(options_.samples_per_cycle);
+  double drift = 0.0;
+  for (std::size_t i = te.size() - period; i < te.size(); ++i) drift = std::max(drift, std::abs(te[i] - te[i - period]));
+  r.periodicity = drift / std::max(r.te[0].peak_to_peak, 1e-300);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace gearbench::dynamics

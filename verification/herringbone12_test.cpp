@@ -1,0 +1,140 @@
+// Tests of the 12-DOF herringbone model (solvers/dynamics/herringbone12_dynamics) and its
+// independent RK4 (reference/ode/herringbone12_rk4): input validation with the case keys in
+// the messages, the production static state as an equilibrium of the reference equations,
+// the reference's observed order across the impact pulses, and the mesh tables.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "dynamics/herringbone12_dynamics.h"
+#include "ode/herringbone12_rk4.h"
+#include "support/test_support.h"
+
+namespace gearbench {
+namespace {
+
+using testing_support::input_error_of;
+
+// Seed 000 (table 2): 17/44, m_n 6 mm, α_t 20°, β 24.43°, 55 mm per half, groove 58 mm.
+model::GearPair seed000_pair() {
+  model::GearPair g;
+  g.teeth = {17, 44};
+  g.normal_module = 6e-3;
+  g.normal_pressure_angle = 18.334317 * std::numbers::pi / 180.0;
+  g.helix_angle = 24.43 * std::numbers::pi / 180.0;
+  g.face_width = 55e-3;
+  g.herringbone = model::Herringbone{58e-3};
+  return g;
+}
+
+const std::array<model::Material, 2> steel{model::Material{206e9, 0.3, 7850}, model::Material{206e9, 0.3, 7850}};
+const model::OperatingPoint seed000_operating{2000.0 * std::numbers::pi / 30.0, 309.09, 313.15, {0.0, 0.0}};
+
+dynamics::Herringbone12Options fast_options() {
+  dynamics::Herringbone12Options o;
+  o.mesh.slices = 40;
+  o.mesh.positions = 180;
+  o.mesh.friction_coefficient = 0.05;
+  return o;
+}
+
+reference::Herringbone12Parameters reference_of(const dynamics::Herringbone12Dynamics& d) {
+  const auto& p = d.parameters();
+  const auto& mesh = d.mesh();
+  return {p.m_p, p.m_g, p.I_p, p.I_g, p.R_p, p.R_g, p.beta_b, p.k_radial, p.c_radial, p.k_axial_p, p.c_axial_p,
+          p.k_axial_g, p.c_axial_g, p.k_groove, p.c_groove, p.k_twist, p.c_twist, p.T_p, p.T_g,
+          p.mean_mesh_stiffness, p.mesh_damping, p.impact_force, p.impact_duration, p.period, p.clock_offset,
+          [&mesh](double tau) {
+            const auto m = mesh.at(tau, tau);
+            return reference::HalfMeshValue{m.stiffness, m.chi_pinion, m.chi_wheel};
+          }};
+}
+
+TEST(Herringbone12, RejectsBadInputNamingTheKey) {
+  const geometry::GearPairGeometry herringbone(seed000_pair());
+  const geometry::GearPairGeometry spur(testing_support::seed003_pair());
+  auto error = [&](const geometry::GearPairGeometry& g, auto edit) {
+    auto o = fast_options();
+    edit(o);
+    return input_error_of([&] { dynamics::Herringbone12Dynamics(g, steel, seed000_operating, o); });
+  };
+  EXPECT_NE(error(spur, [](auto&) {}).find("bearings.floating_pinion = true"), std::string::npos);
+  EXPECT_NE(error(herringbone, [](auto& o) { o.mesh.harmonics = 90; }).find("mesh.harmonics = 90"), std::string::npos);
+  EXPECT_NE(error(herringbone, [](auto& o) { o.half_offset = 1.5; }).find("half_offset_cycles = 1.5"), std::string::npos);
+  EXPECT_NE(error(herringbone, [](auto& o) { o.radial_stiffness = 0.0; }).find("bearings.radial_stiffness_N_per_m"),
+            std::string::npos);
+  EXPECT_NE(error(herringbone, [](auto& o) { o.mesh.friction_coefficient = 0.9; }).find("friction.mu = 0.9"),
+            std::string::npos);
+  // A helical pair that is not a herringbone pair.
+  auto helical = seed000_pair();
+  helical.herringbone.reset();
+  const geometry::GearPairGeometry single(helical);
+  EXPECT_NE(error(single, [](auto&) {}).find("gear_pair.herringbone: missing"), std::string::npos);
+}
+
+// Under the mean mesh (k̄, χ̄) and no pulses, the production static state (Eigen LU of the
+// page's K·q = f) is at rest in the reference equations: every acceleration is at round-off.
+TEST(Herringbone12, StaticStateIsAnEquilibriumOfTheReferenceEquations) {
+  const geometry::GearPairGeometry g(seed000_pair());
+  auto o = fast_options();
+  o.mesh_in_impact = false;
+  const dynamics::Herringbone12Dynamics d(g, steel, seed000_operating, o);
+  auto p = reference_of(d);
+  const auto mean = d.mesh().mean();
+  p.mesh = [mean](double) { return reference::HalfMeshValue{mean.stiffness, mean.chi_pinion, mean.chi_wheel}; };
+  reference::Herringbone12State y{};
+  const auto s = d.static_state();
+  std::copy(s.begin(), s.begin() + 24, y.begin());
+  const auto dy = reference::herringbone12_derivative(p, 0.0, y);
+  const double force = d.parameters().static_force;
+  double worst = 0.0;
+  for (std::size_t i = 12; i < 24; ++i) {
+    const std::size_t local = (i - 12) % 6;
+    const double inertia = local == 2 ? p.I_p : local == 5 ? p.I_g : local < 3 ? p.m_p : p.m_g;
+    const double scale = (local == 2 ? p.R_p : local == 5 ? p.R_g : 1.0) * force;  // force or torque scale
+    worst = std::max(worst, std::abs(dy[i]) * inertia / scale);
+  }
+  std::printf("[ measured ] static state: largest |mass·acceleration| / (F̄ or R·F̄) = %.2e\n", worst);
+  EXPECT_LT(worst, 1e-9);  // LU on a system with condition ~1e6: round-off ~1e-10 of the load
+}
+
+// Final states for dt = T/512, T/1024, T/2048 over two mesh cycles with impacts (pulse
+// starts and ends stepped onto): differences must fall by 2⁴ per halving.
+TEST(Herringbone12, ReferenceRk4HasOrderFourAcrossImpactPulses) {
+  const geometry::GearPairGeometry g(seed000_pair());
+  const dynamics::Herringbone12Dynamics d(g, steel, seed000_operating, fast_options());
+  const auto p = reference_of(d);
+  reference::Herringbone12State y0{};
+  const auto s = d.static_state();
+  std::copy(s.begin(), s.begin() + 24, y0.begin());
+  const double T = p.period;
+  std::vector<double> delta;
+  for (const double steps : {512.0, 1024.0, 2048.0})
+    delta.push_back(reference::herringbone12_rk4(p, y0, 2 * T, T / steps, 2 * T).back().delta[0]);
+  const double order = std::log2(std::abs(delta[0] - delta[1]) / std::abs(delta[1] - delta[2]));
+  std::printf("[ measured ] herringbone RK4 observed order %.3f (δ differences %.2e, %.2e m)\n", order,
+              std::abs(delta[0] - delta[1]), std::abs(delta[1] - delta[2]));
+  EXPECT_GE(order, 3.6);
+  EXPECT_LE(order, 4.4);
+}
+
+// The mesh of a half: the arms summed here from the slices and MeshStiffness's slicing agree
+// (same slices, same pair curve), and the truncated series keeps k̄.
+TEST(Herringbone12, HalfMeshTablesAgreeWithTheSlicing) {
+  const geometry::GearPairGeometry g(seed000_pair());
+  const dynamics::Herringbone12Dynamics d(g, steel, seed000_operating, fast_options());
+  const auto& mesh = d.mesh();
+  std::printf("[ measured ] slicing consistency %.2e, series−table deviation %.2e of k̄\n",
+              mesh.slicing_consistency(), mesh.truncation());
+  EXPECT_LT(mesh.slicing_consistency(), 1e-12);
+  double mean = 0.0;
+  for (int i = 0; i < 1000; ++i) mean += mesh.at(mesh.period() * i / 1000.0, 0.0).stiffness / 1000.0;
+  EXPECT_NEAR(mean / mesh.mean_stiffness(), 1.0, 1e-12);  // the constant term is the table mean
+  EXPECT_GT(mesh.mean().chi_pinion, 0.0);  // friction takes power out: the pinion arm opposes its torque
+}
+
+}  // namespace
+}  // namespace gearbench
