@@ -52,7 +52,7 @@ Material read_material(ObjectReader s) {
   Material m;
   m.youngs_modulus = s.number("youngs_modulus_GPa", Range::closed(1e-3, 1e4), "GPa") * GPa;
   m.poisson_ratio = s.number("poisson_ratio", Range::closed(0.0, 0.5));
-  m.density = s.optional_number("density_kg_m3", Range::positive(1e5), "kg/m3").value_or(7850.0);
+  m.density = s.optional_number("density_kg_m3", Range::closed(100.0, 1e5), "kg/m3").value_or(7850.0);
   s.finish();
   return m;
 }
