@@ -5,9 +5,11 @@
 #include <iostream>
 #include <tuple>
 
+#include "crack_section.h"
 #include "dynamics/herringbone12_dynamics.h"
 #include "dynamics/spur6_dynamics.h"
-#include "crack_section.h"
+#include "efficiency/dynamic_efficiency.h"
+#include "efficiency_sections.h"
 #include "kind_registry.h"
 #include "model/case_reader.h"
 #include "model/errors.h"
@@ -220,6 +222,38 @@ json run_sweep(const Sweep& w, model::OperatingPoint operating, Solve solve) {
   return out;
 }
 
+/// The optional "dynamic_efficiency" section: the loss options of the efficiency kind
+/// ("friction", "load_sharing", ...) plus "load_levels" and "phases" of the loss curves.
+struct DynamicEfficiencySpec {
+  efficiency::MeshLossOptions loss;
+  efficiency::DynamicEfficiencyOptions curves;
+};
+
+std::optional<DynamicEfficiencySpec> read_dynamic_efficiency(model::ObjectReader& root) {
+  if (!root.has("dynamic_efficiency")) return std::nullopt;
+  auto section = root.object("dynamic_efficiency");
+  DynamicEfficiencySpec spec{read_mesh_loss_options(section), {}};
+  spec.curves.load_levels = section.optional_integer("load_levels", 2, 100).value_or(spec.curves.load_levels);
+  spec.curves.phases = section.optional_integer("phases", 4, 100000).value_or(spec.curves.phases);
+  section.finish();
+  return spec;
+}
+
+/// η_D(t) of the recorded window (seed 000 eq. 12) beside the static efficiency on the same
+/// phase grid. A herringbone pair is passed as one helical half with a force series per half.
+json dynamic_efficiency_json(const DynamicEfficiencySpec& spec, const model::GearCase& c,
+                             const std::vector<double>& time, const std::vector<std::vector<double>>& forces,
+                             double mesh_frequency) {
+  model::GearPair mesh = c.gear_pair;
+  mesh.herringbone.reset();
+  const geometry::GearPairGeometry mesh_geometry(mesh);
+  const auto r = efficiency::dynamic_efficiency(mesh_geometry, *c.operating, spec.loss, {c.materials, c.lubricant},
+                                                time, forces, mesh_frequency, spec.curves);
+  return {{"mean", r.mean}, {"static_mean", r.static_mean}, {"efficiency", r.efficiency},
+          {"load_levels_N", r.load_levels},
+          {"friction_model", lubricant::friction_model_name(spec.loss.friction_model)}};
+}
+
 json run_dynamics(const json& case_json) {
   model::ObjectReader root(case_json, "");
   root.string("kind");
@@ -235,24 +269,34 @@ json run_dynamics(const json& case_json) {
   if (model_name == "spur6") {
     const auto options = read_options(root);
     sweep = read_sweep(root);
+    const auto efficiency_spec = read_dynamic_efficiency(root);
     root.finish();
     const dynamics::Spur6Dynamics solver(geometry, materials, *gear_case.operating, options);
-    result = spur6_result(solver, solver.solve());
+    const auto r = solver.solve();
+    result = spur6_result(solver, r);
+    if (efficiency_spec)
+      result["dynamic_efficiency"] =
+          dynamic_efficiency_json(*efficiency_spec, gear_case, r.time, {r.mesh_force}, r.mesh_frequency);
     if (sweep)
       result["speed_sweep"] = run_sweep(*sweep, *gear_case.operating, [&](const model::OperatingPoint& op) {
-        const auto r = dynamics::Spur6Dynamics(geometry, materials, op, options).solve();
-        return std::tuple{r.mesh_frequency, r.dynamic_factor, r.te.rms};
+        const auto point = dynamics::Spur6Dynamics(geometry, materials, op, options).solve();
+        return std::tuple{point.mesh_frequency, point.dynamic_factor, point.te.rms};
       });
   } else {
     const auto options = read_herringbone_options(root, case_json);
     sweep = read_sweep(root);
+    const auto efficiency_spec = read_dynamic_efficiency(root);
     root.finish();
     const dynamics::Herringbone12Dynamics solver(geometry, materials, *gear_case.operating, options);
-    result = herringbone12_result(solver, solver.solve());
+    const auto r = solver.solve();
+    result = herringbone12_result(solver, r);
+    if (efficiency_spec)
+      result["dynamic_efficiency"] = dynamic_efficiency_json(*efficiency_spec, gear_case, r.time,
+                                                             {r.mesh_force[0], r.mesh_force[1]}, r.mesh_frequency);
     if (sweep)
       result["speed_sweep"] = run_sweep(*sweep, *gear_case.operating, [&](const model::OperatingPoint& op) {
-        const auto r = dynamics::Herringbone12Dynamics(geometry, materials, op, options).solve();
-        return std::tuple{r.mesh_frequency, r.dynamic_factor, r.te[0].rms};
+        const auto point = dynamics::Herringbone12Dynamics(geometry, materials, op, options).solve();
+        return std::tuple{point.mesh_frequency, point.dynamic_factor, point.te[0].rms};
       });
   }
   return result;
