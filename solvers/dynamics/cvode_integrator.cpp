@@ -11,6 +11,7 @@
 #include <exception>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "model/errors.h"
@@ -21,6 +22,7 @@ namespace gearbench::dynamics {
 struct RhsHandle {
   const CvodeIntegrator::Rhs* rhs;
   std::exception_ptr error;
+  std::string message;  ///< CVODE's own account of its last error (it is not printed)
 };
 
 struct CvodeIntegrator::Handles {
@@ -35,9 +37,10 @@ struct CvodeIntegrator::Handles {
 
 namespace {
 
-void check_flag(int flag, const char* call) {
+void check_flag(int flag, const char* call, const std::string& detail = {}) {
   if (flag >= 0) return;
-  const std::string message = fmt::format("SUNDIALS {} failed: {} ({})", call, CVodeGetReturnFlagName(flag), flag);
+  std::string message = fmt::format("SUNDIALS {} failed: {} ({})", call, CVodeGetReturnFlagName(flag), flag);
+  if (!detail.empty()) message += ": " + detail;
   if (flag == CV_TOO_MUCH_WORK || flag == CV_TOO_MUCH_ACC || flag == CV_ERR_FAILURE ||
       flag == CV_CONV_FAILURE)
     throw ConvergenceError(message);
@@ -61,6 +64,11 @@ int rhs_trampoline(realtype t, N_Vector y, N_Vector ydot, void* user_data) {
   }
 }
 
+/// CVODE reports errors here instead of on stderr; check_flag puts the text into the error.
+void keep_error_message(int, const char* module, const char* function, char* message, void* data) {
+  static_cast<RhsHandle*>(data)->message = fmt::format("{} in {}: {}", module, function, message);
+}
+
 }  // namespace
 
 CvodeIntegrator::CvodeIntegrator(std::size_t size, Rhs rhs, const CvodeOptions& options)
@@ -76,6 +84,7 @@ CvodeIntegrator::CvodeIntegrator(std::size_t size, Rhs rhs, const CvodeOptions& 
                "CVodeSStolerances");
     handles_->rhs = std::make_unique<RhsHandle>(RhsHandle{&rhs_, nullptr});
     check_flag(CVodeSetUserData(handles_->cvode, handles_->rhs.get()), "CVodeSetUserData");
+    check_flag(CVodeSetErrHandlerFn(handles_->cvode, keep_error_message, handles_->rhs.get()), "CVodeSetErrHandlerFn");
     check_flag(CVodeSetMaxNumSteps(handles_->cvode, options.max_steps), "CVodeSetMaxNumSteps");
     if (options.method == CvodeMethod::adams) {
       // Non-stiff: Adams–Moulton with fixed-point iteration, no Jacobian and no linear solves.
@@ -127,7 +136,7 @@ const std::vector<double>& CvodeIntegrator::advance(double t_out, double stop) {
   realtype t = 0.0;
   const int flag = CVode(handles_->cvode, t_out, handles_->y, &t, CV_NORMAL);
   if (handles_->rhs->error) std::rethrow_exception(std::exchange(handles_->rhs->error, nullptr));
-  check_flag(flag, "CVode");
+  check_flag(flag, "CVode", handles_->rhs->message);
   const double* data = N_VGetArrayPointer(handles_->y);
   std::copy(data, data + y_.size(), y_.begin());
   return y_;
