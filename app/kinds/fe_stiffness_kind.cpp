@@ -52,7 +52,8 @@ json convergence_json(const fe::ElasticResult& r) {
   json rows = json::array();
   for (const auto& c : r.cycles)
     rows.push_back({{"cycle", c.cycle}, {"cells", c.cells}, {"dofs", c.dofs}, {"displacement_m", c.value},
-                    {"relative_change", c.change}, {"observed_rate", c.rate}});
+                    {"relative_change", c.change}, {"observed_rate", c.rate},
+                    {"load_patch_displacement_m", c.load_displacement}});
   return {{"converged", r.converged}, {"observed_rate", r.observed_rate}, {"seconds", r.seconds},
           {"cycles", rows}, {"table", r.table}};
 }
@@ -81,15 +82,19 @@ json run_fe_stiffness(const json& case_json) {
     if (!(out << r.vtu)) throw InputError("vtu_output = " + *vtu_path + ": cannot write the file");
   }
 
-  json positions_mm = json::array(), pair = json::array(), hertz = json::array(), seconds = json::array();
-  std::array<json, 2> compliance{json::array(), json::array()}, convergence{json::array(), json::array()};
+  json positions_mm = json::array(), pair = json::array(), pair_fe_contact = json::array(),
+       hertz = json::array(), seconds = json::array();
+  std::array<json, 2> compliance{json::array(), json::array()}, contact{json::array(), json::array()},
+      convergence{json::array(), json::array()};
   for (const auto& p : r.positions) {
     positions_mm.push_back(p.path_position * 1e3);
     pair.push_back(p.pair_stiffness);
+    pair_fe_contact.push_back(p.pair_stiffness_fe_contact);
     hertz.push_back(1.0 / p.hertz_compliance);
     double t = 0.0;
     for (std::size_t g = 0; g < 2; ++g) {
       compliance[g].push_back(p.tooth[g].compliance);
+      contact[g].push_back(p.tooth[g].contact_compliance);
       convergence[g].push_back(convergence_json(p.tooth[g].fe));
       t += p.tooth[g].fe.seconds;
     }
@@ -98,6 +103,7 @@ json run_fe_stiffness(const json& case_json) {
   json gears = json::array();
   for (std::size_t g = 0; g < 2; ++g)
     gears.push_back({{"tooth_compliance_m_per_N", compliance[g]},
+                     {"load_patch_compliance_m_per_N", contact[g]},
                      {"root_radius_mm", r.radii[g].root * 1e3},
                      {"tip_radius_mm", r.radii[g].tip * 1e3},
                      {"bore_radius_mm", r.bore_radius[g] * 1e3},
@@ -110,6 +116,7 @@ json run_fe_stiffness(const json& case_json) {
           {"gears", gears},
           {"hertz_N_per_m", hertz},
           {"pair_stiffness_N_per_m", pair},
+          {"pair_stiffness_fe_contact_N_per_m", pair_fe_contact},
           {"converged", r.converged},
           {"seconds_per_position", seconds},
           {"seconds", r.seconds},

@@ -294,6 +294,9 @@ ElasticResult solve_elastic(const ElasticProblem& p, const ElasticOptions& o) {
     VectorTools::point_value(dof, s.solution, Point<2>(p.probe[0], p.probe[1]), u);
     CycleRow row{cycle, tria.n_active_cells(), static_cast<unsigned>(dof.n_dofs()),
                  u(0) * p.probe_direction[0] + u(1) * p.probe_direction[1]};
+    // f·u is the work of the load; constrained rows of f are condensed onto their masters
+    // and u satisfies the constraints, so the condensed product equals the full one.
+    row.load_displacement = (s.rhs * s.solution) / p.force_per_thickness;
     if (!r.cycles.empty()) {
       row.change = std::abs(row.value - r.cycles.back().value) / std::abs(row.value);
       row.rate = observed_rate(r.cycles.back(), row);

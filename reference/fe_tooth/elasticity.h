@@ -58,6 +58,9 @@ struct CycleRow {
   double value = 0.0;   ///< probed displacement [m]
   double change = 0.0;  ///< |value − previous| / |value| (0 for the first cycle)
   double rate = 0.0;    ///< observed order in h of the change (0 where undefined)
+  /// Work-conjugate displacement of the load patch, f·u / resultant [m]: the mean
+  /// displacement along load_direction weighted by the traction, local indentation included.
+  double load_displacement = 0.0;
 };
 
 struct ElasticResult {

@@ -141,6 +141,7 @@ ToothCompliance FeToothStiffness::tooth_compliance(int gear, double s, bool vtu)
   fe_options.vtu = vtu;
   c.fe = solve_elastic(p, fe_options);
   c.compliance = c.fe.value / (options_.load_per_width * pair_.face_width);
+  c.contact_compliance = c.fe.cycles.back().load_displacement / (options_.load_per_width * pair_.face_width);
   return c;
 }
 
@@ -150,6 +151,7 @@ FePosition FeToothStiffness::at(double s, bool vtu) const {
   r.tooth = {tooth_compliance(0, s, vtu), tooth_compliance(1, s)};
   r.hertz_compliance = hertz_line_compliance(materials_[0], materials_[1], pair_.face_width);
   r.pair_stiffness = 1.0 / (r.tooth[0].compliance + r.tooth[1].compliance + r.hertz_compliance);
+  r.pair_stiffness_fe_contact = 1.0 / (r.tooth[0].contact_compliance + r.tooth[1].contact_compliance);
   return r;
 }
 

@@ -29,7 +29,10 @@ struct FeToothOptions {
 
 /// One gear's tooth at one mesh position.
 struct ToothCompliance {
-  double compliance = 0.0;       ///< [m/N] for the whole face width
+  double compliance = 0.0;       ///< [m/N] for the whole face width (probe on the load line)
+  /// Work-conjugate compliance of the loaded patch [m/N]: the tooth compliance plus the
+  /// local indentation under the Hertzian pressure of half-width b (not added to Hertz).
+  double contact_compliance = 0.0;
   double load_radius = 0.0;      ///< radius of the contact point [m]
   double hertz_half_width = 0.0; ///< [m]
   Vec2 load_point{}, probe{};    ///< tooth coordinates [m]
@@ -41,6 +44,9 @@ struct FePosition {
   std::array<ToothCompliance, 2> tooth;
   double hertz_compliance = 0.0;   ///< [m/N]
   double pair_stiffness = 0.0;     ///< 1/(c1 + c2 + c_h) [N/m]
+  /// 1/(Σ contact_compliance) [N/m]: the FE's own contact flattening instead of Hertz's
+  /// constant — a bracket on the pair stiffness, not the energy method's definition.
+  double pair_stiffness_fe_contact = 0.0;
 };
 
 struct FeToothResult {
