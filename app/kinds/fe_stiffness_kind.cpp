@@ -44,6 +44,11 @@ fe::FeToothOptions read_options(model::ObjectReader& root, const json& case_json
     o.far_size_modules = m.optional_number("far_size_modules", {0.01, 5.0, true, false}).value_or(o.far_size_modules);
     m.finish();
   }
+  if (root.has("rigid_body")) {
+    if (!case_json["rigid_body"].is_boolean())
+      throw InputError("rigid_body = " + case_json["rigid_body"].dump() + ": must be true or false");
+    o.rigid_body = case_json["rigid_body"].get<bool>();
+  }
   o.fe = read_fe_options(root);
   return o;
 }
@@ -111,6 +116,7 @@ json run_fe_stiffness(const json& case_json) {
                      {"convergence", convergence[g]}});
   return {{"kind", "fe_stiffness"},
           {"plane", options.plane_strain ? "strain" : "stress"},
+          {"rigid_body", options.rigid_body},
           {"path_of_contact_mm", {{"A", path.A * 1e3}, {"E", path.E * 1e3}, {"T1T2", path.t1t2 * 1e3}}},
           {"path_position_mm", positions_mm},
           {"gears", gears},

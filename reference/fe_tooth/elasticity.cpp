@@ -121,7 +121,7 @@ struct LinearSystem {
   Vector<double> rhs, solution;
 };
 
-void assemble_stiffness(const DoFHandler<2>& dof, const Lame& c, LinearSystem& s) {
+void assemble_stiffness(const DoFHandler<2>& dof, const Lame& material, const ElasticProblem& p, LinearSystem& s) {
   const auto& fe = dof.get_fe();
   const QGauss<2> quadrature(fe.degree + 1);
   FEValues<2> v(fe, quadrature, update_gradients | update_JxW_values);
@@ -132,6 +132,8 @@ void assemble_stiffness(const DoFHandler<2>& dof, const Lame& c, LinearSystem& s
   for (const auto& cell : dof.active_cell_iterators()) {
     v.reinit(cell);
     k = 0;
+    const double factor = p.stiffness_factor ? p.stiffness_factor(vec(cell->center())) : 1.0;
+    const Lame c{factor * material.lambda, factor * material.mu};
     for (const unsigned q : v.quadrature_point_indices())
       for (unsigned i = 0; i < n; ++i) {
         const unsigned ci = fe.system_to_component_index(i).first;
@@ -195,7 +197,7 @@ void solve_system(const DoFHandler<2>& dof, const ElasticProblem& p, const Lame&
   s.matrix.reinit(s.pattern);
   s.rhs.reinit(dof.n_dofs());
   s.solution.reinit(dof.n_dofs());
-  assemble_stiffness(dof, c, s);
+  assemble_stiffness(dof, c, p, s);
   assemble_load(dof, p, s);
   SparseDirectUMFPACK direct;
   direct.initialize(s.matrix);

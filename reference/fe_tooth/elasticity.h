@@ -38,6 +38,9 @@ struct ElasticProblem {
   /// point onto it, so that refinement places new boundary vertices on the true curve.
   std::function<bool(const Vec2& midpoint)> on_outline;
   std::function<Vec2(const Vec2& point)> project;
+  /// Optional factor on both Lamé constants by cell centre (1 where absent): a stiff region,
+  /// e.g. a near-rigid gear body to separate the tooth's own compliance from the body's.
+  std::function<double(const Vec2& cell_centre)> stiffness_factor;
   /// The result is u(probe)·probe_direction.
   Vec2 probe{}, probe_direction{};
 };

@@ -128,6 +128,8 @@ ToothCompliance FeToothStiffness::tooth_compliance(int gear, double s, bool vtu)
   p.refine_centre = P;
   p.refine_radius = 2 * b;
   p.refine_size = 0.5 * b;
+  if (options_.rigid_body)
+    p.stiffness_factor = [root](const Vec2& x) { return std::hypot(x[0], x[1]) < root ? 1e3 : 1.0; };
   const auto* line = &outline_[i];
   p.on_outline = [root, zone](const Vec2& x) {
     return std::hypot(x[0], x[1]) > 0.99 * root && std::abs(std::atan2(x[1], x[0])) < zone;

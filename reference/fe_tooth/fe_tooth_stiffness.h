@@ -24,6 +24,9 @@ struct FeToothOptions {
   double far_size_modules = 1.5;      ///< largest initial element size [m_n]
   ElasticOptions fe;                  ///< degree, cycles, Kelly fraction, tolerance
   bool vtu = false;                   ///< VTU of the first solve (gear 1, first position)
+  /// Diagnostic: the body inside the root circle 1000× stiffer, so that the probe sees the
+  /// tooth alone (the energy method's bending + shear + axial, without the foundation).
+  bool rigid_body = false;
   void validate() const;              ///< InputError naming the key
 };
 
