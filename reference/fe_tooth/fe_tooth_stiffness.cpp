@@ -1,5 +1,6 @@
 #include "fe_tooth_stiffness.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
