@@ -1,0 +1,97 @@
+#pragma once
+// Finite-element tooth compliance of a spur pair (the independent reference for the
+// energy method, docs/fe-tooth-model.md): each gear is meshed whole (every tooth, body to
+// the bore, bore clamped); the normal force of a mesh position acts on the loaded tooth's
+// flank along the line of action, spread over the Hertzian half-width; the tooth compliance
+// is the displacement, along the line of action, of the point where the load line crosses
+// the tooth centre line, per unit force. The pair adds the Hertz line-contact compliance.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "elasticity.h"
+#include "model/gear_pair.h"
+#include "model/materials.h"
+
+namespace gearbench::reference::fe {
+
+struct FeToothOptions {
+  bool plane_strain = true;                          ///< else plane stress
+  std::optional<std::array<double, 2>> bore_radius;  ///< [m]; default r_f/2 per gear
+  double load_per_width = 1e5;        ///< normal force per face width [N/m] (Hertz width)
+  double near_size_modules = 0.25;    ///< initial element size at the loaded tooth [m_n]
+  double far_size_modules = 1.5;      ///< largest initial element size [m_n]
+  ElasticOptions fe;                  ///< degree, cycles, Kelly fraction, tolerance
+  bool vtu = false;                   ///< VTU of the first solve (gear 1, first position)
+  /// Diagnostic: the body inside the root circle 1000× stiffer, so that the probe sees the
+  /// tooth alone (the energy method's bending + shear + axial, without the foundation).
+  bool rigid_body = false;
+  void validate() const;              ///< InputError naming the key
+};
+
+/// One gear's tooth at one mesh position.
+struct ToothCompliance {
+  double compliance = 0.0;       ///< [m/N] for the whole face width (probe on the load line)
+  /// Work-conjugate compliance of the loaded patch [m/N]: the tooth compliance plus the
+  /// local indentation under the Hertzian pressure of half-width b (not added to Hertz).
+  double contact_compliance = 0.0;
+  double load_radius = 0.0;      ///< radius of the contact point [m]
+  double hertz_half_width = 0.0; ///< [m]
+  Vec2 load_point{}, probe{};    ///< tooth coordinates [m]
+  ElasticResult fe;
+};
+
+struct FePosition {
+  double path_position = 0.0;      ///< s from T1 [m]
+  std::array<ToothCompliance, 2> tooth;
+  double hertz_compliance = 0.0;   ///< [m/N]
+  double pair_stiffness = 0.0;     ///< 1/(c1 + c2 + c_h) [N/m]
+  /// 1/(Σ contact_compliance) [N/m]: the FE's own contact flattening instead of Hertz's
+  /// constant — a bracket on the pair stiffness, not the energy method's definition.
+  double pair_stiffness_fe_contact = 0.0;
+};
+
+struct FeToothResult {
+  std::vector<FePosition> positions;
+  ContactPath path;
+  std::array<GearRadii, 2> radii;
+  std::array<double, 2> bore_radius{};
+  std::array<std::size_t, 2> initial_cells{};
+  bool converged = true;           ///< every solve met the tolerance
+  std::string vtu;
+  double seconds = 0.0;
+};
+
+class FeToothStiffness {
+ public:
+  /// Generates both teeth and meshes both gears (once; every position reuses the meshes).
+  FeToothStiffness(const model::GearPair& pair, const std::array<model::Material, 2>& materials,
+                   FeToothOptions options);
+
+  /// Compliance of gear `gear`'s tooth with the contact at path position s (from T1).
+  [[nodiscard]] ToothCompliance tooth_compliance(int gear, double s, bool vtu = false) const;
+  /// Both teeth and the pair at s.
+  [[nodiscard]] FePosition at(double s, bool vtu = false) const;
+  /// The given positions (s from T1 [m]).
+  [[nodiscard]] FeToothResult solve(const std::vector<double>& positions) const;
+
+  [[nodiscard]] const ContactPath& path() const { return path_; }
+  [[nodiscard]] const ToothOutline& tooth(int gear) const { return teeth_[static_cast<std::size_t>(gear)]; }
+
+ private:
+  model::GearPair pair_;
+  std::array<model::Material, 2> materials_;
+  FeToothOptions options_;
+  ContactPath path_;
+  std::array<ToothOutline, 2> teeth_;
+  std::array<double, 2> bore_{};
+  std::array<QuadMesh, 2> meshes_;
+  std::array<std::vector<Vec2>, 2> outline_;  ///< dense outline of the loaded tooth ± 1
+};
+
+/// Hertz line-contact compliance of two elastic cylinders over face width L (Yang & Sun,
+/// J. Mech. Trans. Autom. Des. 107 (1985) 411): 1/k_h = 2/(πL)·Σ (1 − ν²)/E.
+double hertz_line_compliance(const model::Material& a, const model::Material& b, double face_width);
+
+}  // namespace gearbench::reference::fe

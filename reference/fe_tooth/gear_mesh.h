@@ -1,0 +1,29 @@
+#pragma once
+// Unstructured quadrilateral mesh of a whole spur gear (every tooth, the body down to the
+// bore) from the generated outline, by the gmsh API (gmsh 4.8, a deal.II dependency).
+// The mesh is graded: fine at `focus` (the loaded tooth), coarser with distance from it.
+#include <array>
+#include <vector>
+
+#include "tooth_outline.h"
+
+namespace gearbench::reference::fe {
+
+/// Vertices and quadrilaterals, each quad's vertices counter-clockwise.
+struct QuadMesh {
+  std::vector<Vec2> vertices;
+  std::vector<std::array<unsigned, 4>> quads;
+};
+
+struct GearMeshSizes {
+  double near = 0.0;    ///< element size at the focus [m]
+  double far = 0.0;     ///< largest element size [m]
+  double growth = 0.3;  ///< size increase per unit distance from the focus [-]
+  Vec2 focus{};
+};
+
+/// Meshes the gear of `tooth` (tooth 0 centred on +x) with a bore of radius bore_radius.
+/// gmsh is a process-wide singleton: calls are serialised internally.
+QuadMesh mesh_gear(const ToothOutline& tooth, double bore_radius, const GearMeshSizes& sizes);
+
+}  // namespace gearbench::reference::fe
