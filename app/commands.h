@@ -14,7 +14,7 @@ enum ExitCode : int {
 
 int run_command(const std::string& case_path, const std::string& output_path);
 int verify_command(const std::string& tier, const std::string& out_dir, const std::string& cases_dir,
-                   const std::string& bench_record);
+                   const std::string& bench_record, const std::string& only);
 int report_compare_command(const std::string& before, const std::string& after);
 
 /// What `gearbench bench` runs and where the record goes.

@@ -35,6 +35,8 @@ int main(int argc, char** argv) {
   verify->add_option("--cases", cases_dir, "folder of the built-in cases")->capture_default_str();
   std::string bench_record;
   verify->add_option("--bench", bench_record, "a `gearbench bench` record to include as the Benchmarks section");
+  std::string only;
+  verify->add_option("--only", only, "regular expression: run only the checks and sections whose id matches");
 
   auto* report = cli.add_subcommand("report", "work with reports");
   report->require_subcommand(1);
@@ -87,7 +89,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*run) return run_command(case_path, output_path);
-    if (*verify) return verify_command(tier, out_dir, cases_dir, bench_record);
+    if (*verify) return verify_command(tier, out_dir, cases_dir, bench_record, only);
     if (*compare) return report_compare_command(before, after);
     if (*perf) return report_perf_command(perf_request);
     if (*pdf) return report_pdf_command(pdf_report);

@@ -16,13 +16,13 @@ std::string default_output_dir() { return std::string(build::source_dir()) + "/r
 std::string default_cases_dir() { return std::string(build::source_dir()) + "/cases"; }
 
 int verify_command(const std::string& tier, const std::string& out_dir, const std::string& cases_dir,
-                   const std::string& bench_record) {
+                   const std::string& bench_record, const std::string& only) {
   const auto parsed = verification::parse_tier(tier);
   if (!std::filesystem::is_directory(cases_dir))
     throw InputError(fmt::format("--cases {}: not a directory", cases_dir));
   const verification::CheckContext context{cases_dir};
   auto report = verification::run_verification(
-      parsed, context, [](const std::string& line) { std::cerr << line << std::endl; });
+      parsed, context, [](const std::string& line) { std::cerr << line << std::endl; }, only);
   if (!bench_record.empty()) report.notes.push_back(reports::benchmark_note(model::read_json_file(bench_record)));
   const std::string folder = [&] {
     const DeferInterrupts defer;  // the report folder appears whole or not at all

@@ -481,13 +481,16 @@ TEST(Cli, MissingFileAndBadArguments) {
   EXPECT_EQ(o.exit_code, 2);
 }
 
+// The report plumbing on the geometry checks (--only keeps the test in seconds under ASan;
+// ctest's verification_gate runs every check of the fast tier).
 TEST(Cli, VerifyTwiceThenCompare) {
   const auto dir = temp_path("cli_verify");
   fs::remove_all(dir);
-  const auto first = run_gearbench("verify --out " + dir.string());
+  const std::string verify = "verify --only '^geometry\\.' --out " + dir.string();
+  const auto first = run_gearbench(verify);
   ASSERT_EQ(first.exit_code, 0) << first.err;
   EXPECT_NE(first.err.find("checks pass"), std::string::npos);  // progress lines on stderr
-  const auto second = run_gearbench("verify --out " + dir.string());
+  const auto second = run_gearbench(verify);
   ASSERT_EQ(second.exit_code, 0) << second.err;
   auto folder = [](const std::string& out) { return fs::path(out.substr(0, out.find('\n'))).parent_path(); };
   const auto a = folder(first.out), b = folder(second.out);
@@ -508,6 +511,15 @@ TEST(Cli, VerifyTwiceThenCompare) {
   fs::remove_all(dir);
 }
 
+TEST(Cli, VerifyOnlyValidates) {
+  const auto bad = run_gearbench("verify --only '(' --out " + temp_path("cli_verify_bad").string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--only \"(\": not a regular expression"), std::string::npos) << bad.err;
+  const auto none = run_gearbench("verify --only '^no_such_check$' --out " + temp_path("cli_verify_none").string());
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_NE(none.err.find("matches no check or section"), std::string::npos) << none.err;
+}
+
 TEST(Cli, BenchRecordsContextAndRatio) {
   const std::string bench_exe = GEARBENCH_BINARY_DIR "/benchmarks/gearbench_benchmarks";
   if (!fs::exists(bench_exe)) GTEST_SKIP() << "benchmarks not built in this preset";
@@ -523,7 +535,7 @@ TEST(Cli, BenchRecordsContextAndRatio) {
   EXPECT_GT(record["ratios"]["BM_GeometryProfile/101"]["ratio"].get<double>(), 0.0);
 
   // The record becomes the report's Benchmarks section.
-  const auto verify = run_gearbench("verify --out " + (dir / "reports").string() + " --bench " +
+  const auto verify = run_gearbench("verify --only '^geometry\\.' --out " + (dir / "reports").string() + " --bench " +
                                     o.out.substr(0, o.out.find('\n')));
   ASSERT_EQ(verify.exit_code, 0) << verify.err;
   std::ifstream md(verify.out.substr(0, verify.out.find('\n')));

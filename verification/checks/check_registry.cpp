@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <fmt/format.h>
+#include <optional>
+#include <regex>
 
 #include "model/errors.h"
 
@@ -66,18 +68,43 @@ reports::CheckRecord run_check(const CheckSpec& check, const CheckContext& conte
   return r;
 }
 
+namespace {
+
+/// The entries whose id matches `only` (all of them when it is empty).
+template <class Spec>
+std::vector<const Spec*> selected(std::vector<const Spec*> specs, const std::optional<std::regex>& only) {
+  if (!only) return specs;
+  std::erase_if(specs, [&](const Spec* s) { return !std::regex_search(s->id, *only); });
+  return specs;
+}
+
+std::optional<std::regex> only_pattern(const std::string& only) {
+  if (only.empty()) return std::nullopt;
+  try {
+    return std::regex(only);
+  } catch (const std::regex_error& e) {
+    throw InputError(fmt::format("--only \"{}\": not a regular expression ({})", only, e.what()));
+  }
+}
+
+}  // namespace
+
 reports::Report run_verification(Tier tier, const CheckContext& context,
-                                 const std::function<void(const std::string&)>& progress) {
+                                 const std::function<void(const std::string&)>& progress, const std::string& only) {
   reports::Report report;
   report.tier = tier_name(tier);
-  const auto checks = Registry::instance().checks(tier);
+  const auto pattern = only_pattern(only);
+  const auto checks = selected(Registry::instance().checks(tier), pattern);
+  const auto sections = selected(Registry::instance().sections(tier), pattern);
+  if (pattern && checks.empty() && sections.empty())
+    throw InputError(fmt::format("--only \"{}\": matches no check or section of the {} tier", only, tier_name(tier)));
   for (std::size_t i = 0; i < checks.size(); ++i) {
     report.checks.push_back(run_check(*checks[i], context));
     const auto& r = report.checks.back();
     progress(fmt::format("[{}/{}] {} ... {} ({:.2f} s)", i + 1, checks.size(), r.id,
                          r.status(), r.seconds));
   }
-  for (const auto* section : Registry::instance().sections(tier)) {
+  for (const auto* section : sections) {
     try {
       section->add(context, report);
     } catch (const std::exception& e) {

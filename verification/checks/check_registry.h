@@ -82,8 +82,11 @@ struct RegisterSection {
 reports::CheckRecord run_check(const CheckSpec& check, const CheckContext& context);
 
 /// Runs the tier's checks and sections into a report; `progress` gets one line per check.
+/// A non-empty `only` (an ECMAScript regular expression) keeps the checks and sections whose
+/// id it matches somewhere; InputError when it is malformed or matches nothing.
 reports::Report run_verification(Tier tier, const CheckContext& context,
-                                 const std::function<void(const std::string&)>& progress);
+                                 const std::function<void(const std::string&)>& progress,
+                                 const std::string& only = {});
 
 Tier parse_tier(const std::string& name);
 std::string tier_name(Tier tier);
