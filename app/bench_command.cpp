@@ -22,6 +22,7 @@
 #include "model/errors.h"
 #include "model/json_reader.h"
 #include "perf_history.h"
+#include "bench_ratios.h"
 #include "report.h"
 
 namespace gearbench::app {
@@ -30,35 +31,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-/// Benchmark family: the name without its arguments ("BM_X/101" -> "BM_X").
-std::string family(const std::string& run_name) { return run_name.substr(0, run_name.find('/')); }
-
-/// Solver over baseline for every run X[/args] that has a run X_baseline[/args] with the same
-/// arguments, or a baseline without arguments for its whole family; medians over repetitions.
-json side_by_side_ratios(const json& benchmarks) {
-  std::map<std::string, std::vector<double>> samples;  // run name -> time per repetition
-  for (const auto& b : benchmarks)
-    if (b.value("run_type", "iteration") == "iteration")
-      samples[b["run_name"].get<std::string>()].push_back(b["real_time"].get<double>());
-  std::map<std::string, double> times;
-  for (const auto& [name, s] : samples) times[name] = reports::median(s);
-  const std::string suffix = "_baseline";
-  json ratios = json::object();
-  for (const auto& [name, time] : times) {
-    const std::string fam = family(name);
-    if (fam.size() > suffix.size() && fam.compare(fam.size() - suffix.size(), suffix.size(), suffix) == 0) continue;
-    const std::string args = name.substr(fam.size());
-    for (const std::string& baseline : {fam + suffix + args, fam + suffix}) {
-      const auto it = times.find(baseline);
-      if (it == times.end() || it->second <= 0.0) continue;
-      ratios[name] = {{"baseline", baseline}, {"solver_time", time}, {"baseline_time", it->second},
-                      {"ratio", time / it->second}};
-      break;
-    }
-  }
-  return ratios;
-}
-
 /// Commit time of `sha` in the source checkout as "YYYY-MM-DDTHH:MM:SSZ", or "" when git
 /// cannot tell (no git, not a checkout, unknown sha). Orders records by commit, not by
 /// when they were recorded.
@@ -124,7 +96,7 @@ int bench_command(const BenchRequest& request) {
   record["gearbench"] = reports::provenance();
   if (const auto t = commit_time_utc(build::git_sha()); !t.empty()) record["gearbench"]["code"]["commit_time_utc"] = t;
   record["gearbench"]["repetitions"] = request.repetitions;
-  record["ratios"] = side_by_side_ratios(record["benchmarks"]);
+  record["ratios"] = reports::side_by_side_ratios(record["benchmarks"]);
   const auto name = reports::report_folder_name();
   const auto target = free_path(request.out_dir, request.record ? name : "bench_" + name);
   {

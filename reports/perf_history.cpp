@@ -42,8 +42,6 @@ void PerfOptions::validate() const {
     throw InputError(fmt::format("--threshold = {}: must lie in [0, 10) (a relative change)", threshold));
 }
 
-namespace {
-
 double unit_seconds(const std::string& unit, const std::string& file) {
   if (unit == "ns") return 1e-9;
   if (unit == "us") return 1e-6;
@@ -51,6 +49,8 @@ double unit_seconds(const std::string& unit, const std::string& file) {
   if (unit == "s") return 1.0;
   throw InputError(fmt::format("{}: time_unit = \"{}\": expected ns, us, ms or s", file, unit));
 }
+
+namespace {
 
 std::string text_or(const json& j, const char* key, const std::string& fallback) {
   return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : fallback;

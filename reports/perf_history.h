@@ -79,4 +79,8 @@ PerfHistory analyse_perf_history(std::vector<PerfRun> runs, const PerfOptions& o
 /// Median of a non-empty sample.
 double median(std::vector<double> values);
 
+/// Seconds per Google Benchmark time_unit ("ns", "us", "ms", "s"); InputError naming `file`
+/// for any other.
+double unit_seconds(const std::string& unit, const std::string& file);
+
 }  // namespace gearbench::reports

@@ -11,6 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "bench_ratios.h"
 #include "mann_whitney.h"
 #include "model/errors.h"
 #include "perf_history.h"
@@ -275,3 +276,17 @@ TEST(PerfCli, ReportPdfDrawsEveryFigureOfAReport) {
 
 }  // namespace
 }  // namespace gearbench::reports
+
+// Ratios compare times in seconds whatever unit each benchmark reports in (a regression:
+// BM_ContactFriction in µs against its baseline in ms came out 1000 times too large).
+TEST(BenchRatios, UseSecondsAcrossTimeUnits) {
+  const auto runs = nlohmann::json::parse(R"([
+    {"run_name": "BM_X", "run_type": "iteration", "real_time": 2.0, "time_unit": "us"},
+    {"run_name": "BM_X_baseline", "run_type": "iteration", "real_time": 4.0, "time_unit": "ms"},
+    {"run_name": "BM_Y/8", "run_type": "iteration", "real_time": 3.0, "time_unit": "ns"},
+    {"run_name": "BM_Y_baseline/8", "run_type": "iteration", "real_time": 6.0, "time_unit": "ns"}])");
+  const auto r = gearbench::reports::side_by_side_ratios(runs);
+  EXPECT_DOUBLE_EQ(r["BM_X"]["ratio"].get<double>(), 2e-6 / 4e-3);
+  EXPECT_DOUBLE_EQ(r["BM_Y/8"]["ratio"].get<double>(), 0.5);
+  EXPECT_FALSE(r.contains("BM_X_baseline"));
+}

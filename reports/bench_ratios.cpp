@@ -1,0 +1,46 @@
+#include "bench_ratios.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "perf_history.h"
+
+namespace gearbench::reports {
+
+namespace {
+/// Benchmark family: the name without its arguments ("BM_X/101" -> "BM_X").
+std::string family(const std::string& run_name) { return run_name.substr(0, run_name.find('/')); }
+}  // namespace
+
+double real_seconds(const nlohmann::json& run) {
+  return run.at("real_time").get<double>() * unit_seconds(run.value("time_unit", "ns"), "benchmark output");
+}
+
+/// Solver over baseline for every run X[/args] that has a run X_baseline[/args] with the same
+/// arguments, or a baseline without arguments for its whole family; medians over repetitions.
+nlohmann::json side_by_side_ratios(const nlohmann::json& benchmarks) {
+  std::map<std::string, std::vector<double>> samples;  // run name -> time per repetition
+  for (const auto& b : benchmarks)
+    if (b.value("run_type", "iteration") == "iteration")
+      samples[b["run_name"].get<std::string>()].push_back(real_seconds(b));
+  std::map<std::string, double> times;
+  for (const auto& [name, s] : samples) times[name] = reports::median(s);
+  const std::string suffix = "_baseline";
+  nlohmann::json ratios = nlohmann::json::object();
+  for (const auto& [name, time] : times) {
+    const std::string fam = family(name);
+    if (fam.size() > suffix.size() && fam.compare(fam.size() - suffix.size(), suffix.size(), suffix) == 0) continue;
+    const std::string args = name.substr(fam.size());
+    for (const std::string& baseline : {fam + suffix + args, fam + suffix}) {
+      const auto it = times.find(baseline);
+      if (it == times.end() || it->second <= 0.0) continue;
+      ratios[name] = {{"baseline", baseline}, {"solver_time", time}, {"baseline_time", it->second},
+                      {"ratio", time / it->second}};
+      break;
+    }
+  }
+  return ratios;
+}
+
+}  // namespace gearbench::reports

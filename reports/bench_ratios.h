@@ -1,0 +1,16 @@
+#pragma once
+// Side-by-side ratios of a Google Benchmark run: each benchmark X[/args] over X_baseline
+// measured in the same run.
+#include <nlohmann/json.hpp>
+
+namespace gearbench::reports {
+
+/// A run's real time in seconds (Google Benchmark reports it in the run's own time_unit).
+double real_seconds(const nlohmann::json& run);
+
+/// Solver over baseline for every run X[/args] that has a run X_baseline[/args] with the same
+/// arguments, or a baseline without arguments for its whole family; medians over
+/// repetitions, times in seconds: {name: {baseline, solver_time, baseline_time, ratio}}.
+nlohmann::json side_by_side_ratios(const nlohmann::json& benchmarks);
+
+}  // namespace gearbench::reports
