@@ -1,5 +1,7 @@
 #include "ode/herringbone12_rk4.h"
 
+#include "ode/fixed_step.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -21,9 +23,6 @@ constexpr Body pinion{0, 1, 2};
 constexpr Body wheel{3, 4, 5};
 constexpr std::size_t half_size = 6;
 constexpr std::size_t rates = 12;
-
-// Breakpoints closer than this fraction of dt are merged (see spur6_rk4).
-constexpr double relative_slack = 1e-9;
 
 void require_positive(double value, const char* name) {
   if (!(value > 0.0))
@@ -111,54 +110,15 @@ Herringbone12State equations(const Herringbone12Parameters& p, double t, double 
   return dy;
 }
 
-Herringbone12State advanced(const Herringbone12State& y, double h, const Herringbone12State& dy) {
-  Herringbone12State r;
-  for (std::size_t i = 0; i < y.size(); ++i) r[i] = y[i] + h * dy[i];
-  return r;
-}
-
-// From a to b in equal steps of at most dt; every stage sees the pulse state of the
-// interval's midpoint.
-void integrate_interval(const Herringbone12Parameters& p, double a, double b, double dt, Herringbone12State& y) {
-  const double inside = 0.5 * (a + b);
-  const auto steps = static_cast<std::size_t>(std::max(1.0, std::ceil((b - a) / dt - relative_slack)));
-  const double h = (b - a) / static_cast<double>(steps);
-  for (std::size_t i = 0; i < steps; ++i) {
-    const double t = a + static_cast<double>(i) * h;
-    const auto d1 = equations(p, t, inside, y);
-    const auto d2 = equations(p, t + h / 2, inside, advanced(y, h / 2, d1));
-    const auto d3 = equations(p, t + h / 2, inside, advanced(y, h / 2, d2));
-    const auto d4 = equations(p, t + h, inside, advanced(y, h, d3));
-    for (std::size_t k = 0; k < y.size(); ++k) y[k] += h / 6 * (d1[k] + 2 * d2[k] + 2 * d3[k] + d4[k]);
-  }
-}
-
-struct Breakpoint {
-  double t;
-  bool sample;
-};
-
-std::vector<Breakpoint> breakpoints(const Herringbone12Parameters& p, double t_end, double dt, double sample_every) {
-  const double slack = relative_slack * dt;
-  std::vector<Breakpoint> inner;
+std::vector<ode::Breakpoint> breakpoints(const Herringbone12Parameters& p, double t_end, double dt,
+                                         double sample_every) {
+  std::vector<double> switches;  // the impact pulses start and end
   if (p.impact_force > 0.0)
     for (std::size_t h = 0; h < 2; ++h)
       for (double n = std::floor(p.clock_offset[h] / p.period) - 1; (n * p.period - p.clock_offset[h]) < t_end; ++n)
-        for (const double tau : {n * p.period, n * p.period + p.impact_duration}) {
-          const double t = tau - p.clock_offset[h];
-          if (t > slack && t < t_end - slack) inner.push_back({t, false});
-        }
-  for (double k = 1; k * sample_every < t_end - slack; ++k) inner.push_back({k * sample_every, true});
-  std::sort(inner.begin(), inner.end(), [](const Breakpoint& l, const Breakpoint& r) { return l.t < r.t; });
-  std::vector<Breakpoint> points{{0.0, true}};
-  for (const Breakpoint& b : inner) {
-    if (b.t - points.back().t >= slack)
-      points.push_back(b);
-    else if (b.sample && !points.back().sample)
-      points.back() = b;
-  }
-  points.push_back({t_end, true});
-  return points;
+        for (const double tau : {n * p.period, n * p.period + p.impact_duration})
+          switches.push_back(tau - p.clock_offset[h]);
+  return ode::breakpoints(switches, t_end, dt, sample_every);
 }
 
 Herringbone12Sample sample(const Herringbone12Parameters& p, double t, const Herringbone12State& y) {
@@ -190,7 +150,10 @@ std::vector<Herringbone12Sample> herringbone12_rk4(const Herringbone12Parameters
   if (t_end == 0.0) return samples;
   const auto points = breakpoints(p, t_end, dt, sample_every);
   for (std::size_t i = 1; i < points.size(); ++i) {
-    integrate_interval(p, points[i - 1].t, points[i].t, dt, y);
+    // Every stage of the interval sees the pulse state of its midpoint.
+    const double inside = 0.5 * (points[i - 1].t + points[i].t);
+    ode::integrate_interval([&](double t, const Herringbone12State& state) { return equations(p, t, inside, state); },
+                            points[i - 1].t, points[i].t, dt, y);
     if (points[i].sample) samples.push_back(sample(p, points[i].t, y));
   }
   return samples;

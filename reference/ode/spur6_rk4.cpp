@@ -1,5 +1,7 @@
 #include "ode/spur6_rk4.h"
 
+#include "ode/fixed_step.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -13,10 +15,6 @@ namespace {
 // Where each coordinate sits in a Spur6State: q_i at i, its rate q̇_i at i + rate.
 enum Coordinate : std::size_t { X1 = 0, Y1 = 1, TH1 = 2, X2 = 3, Y2 = 4, TH2 = 5 };
 constexpr std::size_t rate = 6;
-
-// Breakpoints closer than this fraction of dt are merged, and an interval is cut into
-// ceil(length/dt − this) steps: round-off must neither create slivers nor add a step.
-constexpr double relative_slack = 1e-9;
 
 // ---- Input checks ---------------------------------------------------------------------
 
@@ -174,41 +172,16 @@ Spur6State equations_of_motion(const Spur6Parameters& p, const Loads& loads, con
 
 // ---- Classical Runge–Kutta of order 4 -------------------------------------------------
 
-// y + h·dy.
-Spur6State advanced(const Spur6State& y, double h, const Spur6State& dy) {
-  Spur6State result;
-  for (std::size_t i = 0; i < y.size(); ++i) result[i] = y[i] + h * dy[i];
-  return result;
-}
-
-void rk4_step(const Spur6Parameters& p, const Loads& loads, const ContactSet& set, double t, double h,
-              Spur6State& y) {
-  const Spur6State d1 = equations_of_motion(p, loads, set, t, y);
-  const Spur6State d2 = equations_of_motion(p, loads, set, t + h / 2, advanced(y, h / 2, d1));
-  const Spur6State d3 = equations_of_motion(p, loads, set, t + h / 2, advanced(y, h / 2, d2));
-  const Spur6State d4 = equations_of_motion(p, loads, set, t + h, advanced(y, h, d3));
-  for (std::size_t i = 0; i < y.size(); ++i)
-    y[i] += h / 6 * (d1[i] + 2 * d2[i] + 2 * d3[i] + d4[i]);
-}
-
-// From a to b (no switch strictly inside) in equal steps of at most dt, with the pair set
-// of the midpoint: the right-hand limit of the pair set at a, the left-hand one at b.
+// From a to b (no switch strictly inside) with the pair set of the midpoint: the
+// right-hand limit of the pair set at a, the left-hand one at b.
 void integrate_interval(const Spur6Parameters& p, const Loads& loads, double a, double b, double dt,
                         Spur6State& y) {
   const ContactSet set = contact_set_at(p, (a + b) / 2);
-  const auto steps = static_cast<std::size_t>(
-      std::max(1.0, std::ceil((b - a) / dt - relative_slack)));
-  const double h = (b - a) / static_cast<double>(steps);
-  for (std::size_t i = 0; i < steps; ++i)
-    rk4_step(p, loads, set, a + static_cast<double>(i) * h, h, y);
+  ode::integrate_interval(
+      [&](double t, const Spur6State& state) { return equations_of_motion(p, loads, set, t, state); }, a, b, dt, y);
 }
 
 // ---- The times the integrator steps onto ----------------------------------------------
-
-struct Breakpoint {
-  double t;
-  bool sample;
-};
 
 // Where the right-hand side jumps, as phases mod(u·t, p_bt) of a mesh period (section
 // "Mesh"): a pair enters at A, a pair leaves at E, a pair passes the pitch point C.
@@ -216,31 +189,11 @@ std::array<double, 3> switch_phases(const Spur6Parameters& p) {
   return {0.0, wrap(p.E - p.A, p.pbt), wrap(p.C - p.A, p.pbt)};
 }
 
-// 0, every switch time and every k·sample_every at least the slack inside (0, t_end), and
-// t_end, sorted; points closer than the slack are merged, keeping a sample time exactly.
-std::vector<Breakpoint> breakpoints(const Spur6Parameters& p, double t_end, double dt,
-                                    double sample_every) {
-  const double slack = relative_slack * dt;
-  std::vector<Breakpoint> inner;
+std::vector<ode::Breakpoint> breakpoints(const Spur6Parameters& p, double t_end, double dt, double sample_every) {
+  std::vector<double> switches;
   for (double n = 0; n * p.pbt / p.contact_speed < t_end; ++n)
-    for (double phase : switch_phases(p)) {
-      const double t = (n * p.pbt + phase) / p.contact_speed;
-      if (t > slack && t < t_end - slack) inner.push_back({t, false});
-    }
-  for (double k = 1; k * sample_every < t_end - slack; ++k)
-    inner.push_back({k * sample_every, true});
-  std::sort(inner.begin(), inner.end(),
-            [](const Breakpoint& l, const Breakpoint& r) { return l.t < r.t; });
-
-  std::vector<Breakpoint> points{{0.0, true}};
-  for (const Breakpoint& b : inner) {
-    if (b.t - points.back().t >= slack)
-      points.push_back(b);
-    else if (b.sample && !points.back().sample)
-      points.back() = b;
-  }
-  points.push_back({t_end, true});
-  return points;
+    for (double phase : switch_phases(p)) switches.push_back((n * p.pbt + phase) / p.contact_speed);
+  return ode::breakpoints(switches, t_end, dt, sample_every);
 }
 
 Spur6Sample make_sample(const Spur6Parameters& p, double t, const Spur6State& y) {
@@ -291,7 +244,7 @@ std::vector<Spur6Sample> spur6_rk4(const Spur6Parameters& p, const Spur6State& y
   Spur6State y = y0;
   std::vector<Spur6Sample> samples{make_sample(p, 0.0, y)};
   if (t_end == 0.0) return samples;
-  const std::vector<Breakpoint> points = breakpoints(p, t_end, dt, sample_every);
+  const std::vector<ode::Breakpoint> points = breakpoints(p, t_end, dt, sample_every);
   const Loads loads = quasi_static_loads(p);
   for (std::size_t i = 1; i < points.size(); ++i) {
     integrate_interval(p, loads, points[i - 1].t, points[i].t, dt, y);
