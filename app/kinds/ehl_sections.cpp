@@ -57,6 +57,7 @@ nlohmann::json finite_vector(const std::vector<double>& v, double scale) {
 
 /// The lubricant and solids of the contact; radius, load and speeds come from the mesh.
 ehl::LineContactData read_gear_fluid(model::ObjectReader& root, const model::GearCase& c, const std::string& kind) {
+  if (!c.operating) throw InputError("operating: missing required key (kind " + kind + ")");
   if (!c.materials) throw InputError("materials: missing required key (kind " + kind + ")");
   if (!c.lubricant) throw InputError("lubricant: missing required key (kind " + kind + ")");
   auto d = ehl::LineContactData::from_gear_media(*c.materials, *c.lubricant);

@@ -15,7 +15,8 @@ namespace gearbench::app {
 /// "cycle", "max_cycles", "tolerance"} over the given defaults.
 ehl::EhlOptions read_ehl_grid(model::ObjectReader& root, ehl::EhlOptions defaults = {});
 
-/// A gear-pair case's contact fluid and solids for EHL along the mesh: E′ from "materials",
+/// A gear-pair case's contact fluid and solids for EHL along the mesh (requires "operating",
+/// "materials" and "lubricant"): E′ from "materials",
 /// η0, α and z from "lubricant", the optional "rheology": {"viscosity_model",
 /// "density_model"}. Radius, load and speeds are the mesh's; `kind` names the case kind in
 /// errors.

@@ -67,7 +67,6 @@ json run_ehl_transient(const json& case_json) {
   root.string("kind");
   root.optional_string("description");
   const auto gear_case = model::read_gear_case(root);
-  if (!gear_case.operating) throw InputError("operating: missing required key (kind ehl_transient)");
   const auto fluid = read_gear_fluid(root, gear_case, "ehl_transient");
   ehl::TransientMeshOptions options;
   options.steps = root.optional_integer("time_steps", 4, 100000).value_or(options.steps);

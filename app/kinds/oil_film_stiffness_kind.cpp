@@ -46,7 +46,6 @@ json run_oil_film_stiffness(const json& case_json) {
   root.string("kind");
   root.optional_string("description");
   const auto gear_case = model::read_gear_case(root);
-  if (!gear_case.operating) throw InputError("operating: missing required key (kind oil_film_stiffness)");
   const auto fluid = read_gear_fluid(root, gear_case, "oil_film_stiffness");
   ehl::OilFilmStiffnessOptions options;
   options.positions = root.optional_integer("positions", 1, 10000).value_or(options.positions);

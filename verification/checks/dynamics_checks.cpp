@@ -8,6 +8,7 @@
 #include <map>
 
 #include "check_registry.h"
+#include "dynamics_case.h"
 #include "dynamics/spur6_dynamics.h"
 #include "ode/spur6_rk4.h"
 
@@ -21,16 +22,7 @@ const char* section = "Gear dynamics (6-DOF spur)";
 const char* seed_section = "Seed reproductions: dynamics (seed 003)";
 const char* solver = "dynamics";
 
-struct DynamicsCase {
-  model::GearPair pair;
-  std::array<model::Material, 2> materials;
-  model::OperatingPoint operating;
-};
-
-DynamicsCase seed003(const CheckContext& ctx) {
-  const auto c = ctx.gear_case("seed003_spur_dynamics.json");
-  return {c.gear_pair, *c.materials, *c.operating};
-}
+DynamicsCase seed003(const CheckContext& ctx) { return dynamics_case(ctx, "seed003_spur_dynamics.json"); }
 
 // With rigid bearings the pair is one torsional oscillator on the mean mesh stiffness:
 // ω_n = √(k̄·(r_b1²/I1 + r_b2²/I2)) (REFERENCE-FACTS, dynamics). Bearings of 1e16 N/m leave

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "check_registry.h"
+#include "dynamics_case.h"
 #include "model/errors.h"
 #include "dynamics/herringbone12_dynamics.h"
 #include "dynamics/spur6_dynamics.h"
@@ -20,25 +21,13 @@ using dynamics::Spur6Options;
 
 const char* solver = "dynamics";
 
-struct DynamicsCase {
-  model::GearPair pair;
-  std::array<model::Material, 2> materials;
-  model::OperatingPoint operating;
-};
-
-DynamicsCase seed003(const CheckContext& ctx) {
-  const auto c = ctx.gear_case("seed003_spur_dynamics.json");
-  return {c.gear_pair, *c.materials, *c.operating};
-}
+DynamicsCase seed003(const CheckContext& ctx) { return dynamics_case(ctx, "seed003_spur_dynamics.json"); }
 
 // --- 12-DOF herringbone ------------------------------------------------------------------
 
 const char* herringbone_section = "Gear dynamics (12-DOF herringbone)";
 
-DynamicsCase seed000(const CheckContext& ctx) {
-  const auto c = ctx.gear_case("seed000_herringbone_dynamics.json");
-  return {c.gear_pair, *c.materials, *c.operating};
-}
+DynamicsCase seed000(const CheckContext& ctx) { return dynamics_case(ctx, "seed000_herringbone_dynamics.json"); }
 
 /// The options of cases/seed000_herringbone_dynamics.json (the defaults, μ = 0.05).
 dynamics::Herringbone12Options seed000_options() {
