@@ -23,6 +23,37 @@ constexpr double hand[2] = {1.0, -1.0};  // σ_h: the halves are of opposite han
 
 int index(int half, Local c) { return 6 * half + c; }
 
+using Matrix12 = Eigen::Matrix<double, 12, 12>;
+using Vector12 = Eigen::Matrix<double, 12, 1>;
+
+/// Bearings, groove coupling (axial) and shaft twist of both halves: the stiffness of
+/// everything but the mesh (docs/dynamics-model.md, "12-DOF").
+Matrix12 support_stiffness(const Herringbone12Parameters& p) {
+  Matrix12 K = Matrix12::Zero();
+  for (int h = 0; h < 2; ++h) {
+    K(index(h, YP), index(h, YP)) += p.k_radial;
+    K(index(h, YG), index(h, YG)) += p.k_radial;
+    K(index(h, ZP), index(h, ZP)) += p.k_axial_p + p.k_groove;
+    K(index(h, ZG), index(h, ZG)) += p.k_axial_g + p.k_groove;
+    K(index(h, ZP), index(1 - h, ZP)) -= p.k_groove;
+    K(index(h, ZG), index(1 - h, ZG)) -= p.k_groove;
+    for (const Local c : {TP, TG}) {
+      K(index(h, c), index(h, c)) += p.k_twist;
+      K(index(h, c), index(1 - h, c)) -= p.k_twist;
+    }
+  }
+  return K;
+}
+
+/// ∂δ_h/∂q: the mesh deflection of half h along the normal as a linear form in q.
+Vector12 mesh_direction(const Herringbone12Parameters& p, int h) {
+  const double cb = std::cos(p.beta_b), sb = std::sin(p.beta_b);
+  Vector12 v = Vector12::Zero();
+  v(index(h, YP)) = cb, v(index(h, ZP)) = hand[h] * sb, v(index(h, TP)) = cb * p.R_p;
+  v(index(h, YG)) = -cb, v(index(h, ZG)) = -hand[h] * sb, v(index(h, TG)) = -cb * p.R_g;
+  return v;
+}
+
 void check_range(double v, double lo, double hi, const char* key) {
   if (!(v >= lo && v <= hi)) throw InputError(fmt::format("{} = {}: allowed range is [{}, {}]", key, v, lo, hi));
 }
@@ -221,24 +252,11 @@ double Herringbone12Dynamics::energy(double t, double t_mid, const double* y) co
 // K·q = f under the mean stiffness and arms with θ_g = 0 in the left half (the rigid-body
 // rotation; with uncoupled halves, in both), solved by Eigen's full-pivot LU.
 std::vector<double> Herringbone12Dynamics::static_state() const {
-  const double cb = std::cos(p_.beta_b), sb = std::sin(p_.beta_b);
-  Eigen::Matrix<double, 12, 12> K = Eigen::Matrix<double, 12, 12>::Zero();
-  Eigen::Matrix<double, 12, 1> f = Eigen::Matrix<double, 12, 1>::Zero();
+  Matrix12 K = support_stiffness(p_);
+  Vector12 f = Vector12::Zero();
   for (int h = 0; h < 2; ++h) {
-    K(index(h, YP), index(h, YP)) += p_.k_radial;
-    K(index(h, YG), index(h, YG)) += p_.k_radial;
-    K(index(h, ZP), index(h, ZP)) += p_.k_axial_p + p_.k_groove;
-    K(index(h, ZG), index(h, ZG)) += p_.k_axial_g + p_.k_groove;
-    K(index(h, ZP), index(1 - h, ZP)) -= p_.k_groove;
-    K(index(h, ZG), index(1 - h, ZG)) -= p_.k_groove;
-    for (const Local c : {TP, TG}) {
-      K(index(h, c), index(h, c)) += p_.k_twist;
-      K(index(h, c), index(1 - h, c)) -= p_.k_twist;
-    }
-    Eigen::Matrix<double, 12, 1> v = Eigen::Matrix<double, 12, 1>::Zero(), load = v;
-    v(index(h, YP)) = cb, v(index(h, ZP)) = hand[h] * sb, v(index(h, TP)) = cb * p_.R_p;
-    v(index(h, YG)) = -cb, v(index(h, ZG)) = -hand[h] * sb, v(index(h, TG)) = -cb * p_.R_g;
-    load = v;
+    const Vector12 v = mesh_direction(p_, h);
+    Vector12 load = v;
     load(index(h, TP)) += mesh_.mean().chi_pinion;
     load(index(h, TG)) -= mesh_.mean().chi_wheel;
     K += p_.mean_mesh_stiffness * load * v.transpose();
@@ -266,26 +284,13 @@ std::vector<double> Herringbone12Dynamics::static_state() const {
 }
 
 std::vector<double> Herringbone12Dynamics::natural_frequencies(std::vector<std::vector<double>>* shapes) const {
-  const double cb = std::cos(p_.beta_b), sb = std::sin(p_.beta_b);
-  Eigen::Matrix<double, 12, 12> M = Eigen::Matrix<double, 12, 12>::Zero(), K = M;
+  Matrix12 M = Matrix12::Zero(), K = support_stiffness(p_);
   for (int h = 0; h < 2; ++h) {
     M(index(h, YP), index(h, YP)) = M(index(h, ZP), index(h, ZP)) = p_.m_p;
     M(index(h, YG), index(h, YG)) = M(index(h, ZG), index(h, ZG)) = p_.m_g;
     M(index(h, TP), index(h, TP)) = p_.I_p;
     M(index(h, TG), index(h, TG)) = p_.I_g;
-    K(index(h, YP), index(h, YP)) += p_.k_radial;
-    K(index(h, YG), index(h, YG)) += p_.k_radial;
-    K(index(h, ZP), index(h, ZP)) += p_.k_axial_p + p_.k_groove;
-    K(index(h, ZG), index(h, ZG)) += p_.k_axial_g + p_.k_groove;
-    K(index(h, ZP), index(1 - h, ZP)) -= p_.k_groove;
-    K(index(h, ZG), index(1 - h, ZG)) -= p_.k_groove;
-    for (const Local c : {TP, TG}) {
-      K(index(h, c), index(h, c)) += p_.k_twist;
-      K(index(h, c), index(1 - h, c)) -= p_.k_twist;
-    }
-    Eigen::Matrix<double, 12, 1> v = Eigen::Matrix<double, 12, 1>::Zero();
-    v(index(h, YP)) = cb, v(index(h, ZP)) = hand[h] * sb, v(index(h, TP)) = cb * p_.R_p;
-    v(index(h, YG)) = -cb, v(index(h, ZG)) = -hand[h] * sb, v(index(h, TG)) = -cb * p_.R_g;
+    const Vector12 v = mesh_direction(p_, h);
     K += p_.mean_mesh_stiffness * v * v.transpose();
   }
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>> solver(K, M);
