@@ -316,4 +316,14 @@ double squeeze_load_per_length(double radius, double viscosity, double h0, doubl
          std::pow(h0, 1.5);
 }
 
+double thermal_loading_parameter(double beta, double eta0, double mean_speed, double conductivity) {
+  return beta * eta0 * mean_speed * mean_speed / conductivity;
+}
+
+double gupta_thermal_reduction(double hertz_pressure, double reduced_modulus, double L_t, double slide_to_roll) {
+  const double numerator = 1.0 - 13.2 * (hertz_pressure / reduced_modulus) * std::pow(L_t, 0.42);
+  const double denominator = 1.0 + 0.213 * (1.0 + 2.23 * std::pow(std::abs(slide_to_roll), 0.83)) * std::pow(L_t, 0.64);
+  return numerator / denominator;
+}
+
 }  // namespace gearbench::reference

@@ -107,6 +107,20 @@ double moes_h(const LineContact& c);
 double moes_H_to_metres(double H, const LineContact& c);
 double metres_to_moes_H(double h, const LineContact& c);
 
+// ---- Thermal reduction of the central film (Gupta et al.) -------------------------------
+// Gupta, Cheng, Zhu & Wang, J. Tribol. 114 (1992) 676, curve fit to their Newtonian thermal
+// line-contact solutions, in the form quoted by ../shared/REFERENCE-FACTS.md (NOT re-read at
+// the source; the paper states no fit accuracy that we could check):
+//   φ_T = h_c,thermal/h_c,isothermal
+//       = [1 − 13.2·(p_h/E′)·L_t^0.42] / [1 + 0.213·(1 + 2.23·SRR^0.83)·L_t^0.64],
+//   L_t = β·η0·ū²/k  (β the viscosity–temperature coefficient, k the oil's conductivity),
+//   SRR = |u1 − u2|/ū.
+
+/// The thermal loading parameter L_t = β·η0·ū²/k.
+double thermal_loading_parameter(double beta, double eta0, double mean_speed, double conductivity);
+/// Gupta's thermal reduction factor φ_T of the central film.
+double gupta_thermal_reduction(double hertz_pressure, double reduced_modulus, double L_t, double slide_to_roll);
+
 // ---- Rigid cylinder, isoviscous (Martin) -----------------------------------------------
 // Reynolds' equation integrated once, p' = 6η0(u1 + u2)(h − h*)/h³ with h = h0 + x²/(2R),
 // p(−∞) = 0. Lengths are scaled by √(2Rh0), films by h0, pressures by η0·ū·√(2Rh0)/h0².

@@ -22,14 +22,15 @@ struct Level {
   Level(std::size_t nodes, double x_in, double x_out)
       : n(nodes), h((x_out - x_in) / static_cast<double>(nodes - 1)), deformation(nodes, h),
         X(nodes), P(nodes, 0.0), H(nodes, 0.0), W(nodes, 0.0), eps(nodes, 0.0), rho(nodes, 1.0),
-        f(nodes, 0.0) {
+        f(nodes, 0.0), flow_factor(nodes, 1.0), wedge_factor(nodes, 1.0) {
     for (std::size_t i = 0; i < n; ++i) X[i] = x_in + static_cast<double>(i) * h;
   }
   std::size_t n;
   double h;
   Deformation deformation;
   std::vector<double> X, P, H, W, eps, rho;
-  std::vector<double> f;   ///< FAS right-hand side of the Reynolds equation
+  std::vector<double> f;
+  std::vector<double> flow_factor, wedge_factor;  ///< thermal film factors (1: isothermal)   ///< FAS right-hand side of the Reynolds equation
   std::vector<double> rho_h_old;  ///< ρ̄H of the previous time step (transient only)
   /// FAS right-hand side of the film equation on a coarse grid: the injected fine film minus
   /// the coarse film of the injected pressure, so that both grids start from the same film
@@ -64,6 +65,7 @@ class FasMultigrid::Impl {
         for (std::size_t I = 0; I < coarse.n; ++I) coarse.rho_h_old[I] = levels_[k]->rho_h_old[2 * I];
       }
     }
+    inject_film_factors();
   }
 
   EhlResult solve(const std::optional<WarmStart>& warm) {
@@ -138,6 +140,23 @@ class FasMultigrid::Impl {
     }
   }
 
+  /// The thermal factors of the finest grid, injected into the coarser ones.
+  void inject_film_factors() {
+    if (state_.flow_factor.empty() && state_.wedge_factor.empty()) return;
+    Level& fine = *levels_.back();
+    if (state_.flow_factor.size() != fine.n || state_.wedge_factor.size() != fine.n)
+      throw std::invalid_argument("ContactState film factors must hold the finest grid");
+    fine.flow_factor = state_.flow_factor;
+    fine.wedge_factor = state_.wedge_factor;
+    for (std::size_t k = levels_.size() - 1; k > 0; --k) {
+      auto& coarse = *levels_[k - 1];
+      for (std::size_t I = 0; I < coarse.n; ++I) {
+        coarse.flow_factor[I] = levels_[k]->flow_factor[2 * I];
+        coarse.wedge_factor[I] = levels_[k]->wedge_factor[2 * I];
+      }
+    }
+  }
+
   // --- state -------------------------------------------------------------------------
   void update_film(Level& l) {
     if (o_.direct_deformation)
@@ -154,9 +173,10 @@ class FasMultigrid::Impl {
   void update_coefficients(Level& l) {
     const double inv_lambda = 1.0 / problem_.lambda();
     for (std::size_t i = 0; i < l.n; ++i) {
-      l.rho[i] = problem_.density(l.P[i]);
+      const double rho = problem_.density(l.P[i]);
       const double H = std::max(l.H[i], 0.0);
-      l.eps[i] = l.rho[i] * H * H * H / problem_.viscosity(l.P[i]) * inv_lambda;
+      l.rho[i] = rho * l.wedge_factor[i];
+      l.eps[i] = l.flow_factor[i] * rho * H * H * H / problem_.viscosity(l.P[i]) * inv_lambda;
     }
   }
 

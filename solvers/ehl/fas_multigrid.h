@@ -21,6 +21,11 @@ struct ContactState {
   double load = 0.0;        ///< F = ∫P dX; 0 takes the problem's load
   double time_step = 0.0;   ///< ΔT; 0 is steady
   std::vector<double> rho_h_old;  ///< (ρ̄H) of the previous step on the finest grid
+  /// Thermal film (generalized Reynolds equation, Yang & Wen 1990): per finest-grid node,
+  /// the Poiseuille coefficient (ρ/η)_e and the wedge density ρ* relative to the isothermal
+  /// ρ̄/η̄ and ρ̄ at the same pressure. Frozen during a solve; coarse grids inject them.
+  /// Empty: isothermal (all factors 1).
+  std::vector<double> flow_factor, wedge_factor;
 };
 
 /// A previous solution to start from instead of full multigrid.

@@ -1,0 +1,113 @@
+// The lubricant, solids and "thermal" sections of the thermal EHL kinds.
+#include "tehl_sections.h"
+
+#include <fmt/format.h>
+
+#include "ehl_sections.h"
+#include "model/errors.h"
+
+namespace gearbench::app {
+
+using model::Range;
+using nlohmann::json;
+
+lubricant::ThermalLubricantData read_thermal_lubricant(model::ObjectReader& root, double inlet_temperature,
+                                                       std::optional<double>& eyring_stress) {
+  lubricant::ThermalLubricantData d;
+  d.inlet_temperature = inlet_temperature;
+  auto l = root.object("lubricant");
+  d.pressure_viscosity = l.number("pressure_viscosity_1_per_GPa", Range::positive(100.0), "1/GPa") * 1e-9;
+  d.density_15C = l.number("density_kg_m3", {500.0, 2000.0}, "kg/m3");
+  d.thermal_conductivity = l.number("thermal_conductivity_W_per_mK", {0.01, 10.0}, "W/(m*K)");
+  d.specific_heat = l.number("specific_heat_J_per_kgK", {100.0, 1e5}, "J/(kg*K)");
+  const bool walther = l.has("nu40_mm2_s") || l.has("nu100_mm2_s");
+  if (walther && (l.has("viscosity_Pa_s") || l.has("temperature_viscosity_1_per_K")))
+    throw InputError("lubricant: give either viscosity_Pa_s with temperature_viscosity_1_per_K (Roelands) or "
+                     "nu40_mm2_s with nu100_mm2_s (Ubbelohde–Walther), not both");
+  if (walther) {
+    d.nu40 = l.number("nu40_mm2_s", {2.0, 1e6}, "mm2/s") * 1e-6;
+    d.nu100 = l.number("nu100_mm2_s", {2.0, 1e6}, "mm2/s") * 1e-6;
+  } else {
+    d.viscosity = l.number("viscosity_Pa_s", {1e-4, 1e4}, "Pa*s");
+    d.temperature_viscosity = l.number("temperature_viscosity_1_per_K", {0.0, 1.0}, "1/K");
+  }
+  if (auto tau = l.optional_number("eyring_stress_MPa", Range::positive(1e3), "MPa")) eyring_stress = *tau * 1e6;
+  l.finish();
+  return d;
+}
+
+ehl::SolidThermalData read_solids(model::ObjectReader& root) {
+  auto s = root.object("solids");
+  ehl::SolidThermalData d;
+  d.conductivity = s.number_pair("thermal_conductivity_W_per_mK", {0.1, 1e4}, "W/(m*K)");
+  d.specific_heat = s.number_pair("specific_heat_J_per_kgK", {10.0, 1e5}, "J/(kg*K)");
+  d.density = s.number_pair("density_kg_m3", {100.0, 1e5}, "kg/m3");
+  s.finish();
+  return d;
+}
+
+ehl::ThermalEhlOptions read_thermal_options(model::ObjectReader& root) {
+  ehl::ThermalEhlOptions o;
+  o.grid = read_ehl_grid(root, o.grid);
+  if (!root.has("thermal")) return o;
+  auto t = root.object("thermal");
+  o.film.film_nodes = t.optional_integer("film_nodes", 4, 200).value_or(o.film.film_nodes);
+  o.film.solid_nodes = t.optional_integer("solid_nodes", 3, 200).value_or(o.film.solid_nodes);
+  if (auto d = t.optional_number("solid_depth_mm", Range::positive(1e3), "mm")) o.film.depth = *d * 1e-3;
+  const auto sources = t.optional_string("heat_sources", {"shear_and_compression", "shear", "compression", "none"})
+                           .value_or("shear_and_compression");
+  o.film.shear_heating = sources == "shear_and_compression" || sources == "shear";
+  o.film.compression = sources == "shear_and_compression" || sources == "compression";
+  o.max_iterations = t.optional_integer("max_iterations", 1, 10000).value_or(o.max_iterations);
+  o.temperature_tolerance =
+      t.optional_number("temperature_tolerance", {0.0, 10.0, true, true}).value_or(o.temperature_tolerance);
+  t.finish();
+  return o;
+}
+
+json thermal_result_json(const ehl::ThermalEhlResult& r, bool fields) {
+  json out = {
+      {"h_central_m", finite_or_null(r.h_central)},
+      {"h_min_m", finite_or_null(r.h_min)},
+      {"x_h_min_m", finite_or_null(r.x_h_min)},
+      {"p_max_Pa", finite_or_null(r.p_max)},
+      {"temperature_rise_max_K", finite_or_null(r.temperature_rise_max)},
+      {"x_temperature_rise_max_m", finite_or_null(r.x_temperature_rise_max)},
+      {"wall_temperature_rise_max_K", {finite_or_null(r.wall_temperature_rise_max[0]),
+                                       finite_or_null(r.wall_temperature_rise_max[1])}},
+      {"friction_coefficient", finite_or_null(r.friction_coefficient)},
+      {"friction_force_per_length_N_per_m", finite_or_null(r.friction_force)},
+      {"isothermal", {{"h_central_m", finite_or_null(r.isothermal_h_central)},
+                      {"h_min_m", finite_or_null(r.isothermal_h_min)},
+                      {"p_max_Pa", finite_or_null(r.isothermal_p_max)},
+                      {"friction_coefficient", finite_or_null(r.isothermal_friction_coefficient)}}},
+      {"heat_balance_W_per_m", {{"shear_heating", finite_or_null(r.heat.shear_heating)},
+                                {"compression", finite_or_null(r.heat.compression)},
+                                {"film_outflow", finite_or_null(r.heat.film_outflow)},
+                                {"solid_outflow", {finite_or_null(r.heat.solid_outflow[0]),
+                                                   finite_or_null(r.heat.solid_outflow[1])}},
+                                {"depth_loss", {finite_or_null(r.heat.depth_loss[0]),
+                                                finite_or_null(r.heat.depth_loss[1])}}}},
+      {"diagnostics", {{"converged", r.converged}, {"iterations", r.iterations},
+                       {"temperature_change_history_K", finite_vector(r.temperature_change_history)},
+                       {"h_min_history_m", finite_vector(r.h_min_history)},
+                       {"pressure_cycles", r.pressure_cycles}, {"work_units", r.work_units},
+                       {"solid_depth_m", r.depth}, {"nodes", r.x.size()},
+                       {"film_nodes", r.zeta.size()}, {"solid_nodes", r.solid_depth.size()},
+                       {"seconds", r.seconds}}},
+  };
+  if (r.friction_coefficient_eyring) out["friction_coefficient_eyring"] = finite_or_null(*r.friction_coefficient_eyring);
+  if (fields) {
+    json film = json::array();
+    for (const auto& column : r.film_temperature) film.push_back(finite_vector(column));
+    std::array<json, 2> solids{json::array(), json::array()};
+    for (int b = 0; b < 2; ++b)
+      for (const auto& column : r.solid_temperature[static_cast<std::size_t>(b)]) solids[static_cast<std::size_t>(b)].push_back(finite_vector(column));
+    out["profile"] = {{"x_m", finite_vector(r.x)}, {"p_Pa", finite_vector(r.p)}, {"h_m", finite_vector(r.h)}};
+    out["temperature_field"] = {{"zeta", finite_vector(r.zeta)}, {"solid_depth_m", finite_vector(r.solid_depth)},
+                                {"film_K", film}, {"solid_a_K", solids[0]}, {"solid_b_K", solids[1]}};
+  }
+  return out;
+}
+
+}  // namespace gearbench::app

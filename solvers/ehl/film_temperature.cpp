@@ -1,0 +1,330 @@
+#include "film_temperature.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <gsl/gsl_linalg.h>
+#include <stdexcept>
+
+#include "model/errors.h"
+
+namespace gearbench::ehl {
+
+namespace {
+/// ∫₀¹ y dζ on uniform nodes: composite Simpson, with Simpson's 3/8 rule on the last three
+/// intervals when their number is odd; both are exact for cubics, so the isothermal
+/// integrals (quadratic in ζ) come out exact.
+double integrate_nodes(const std::vector<double>& y) {
+  const std::size_t n = y.size() - 1;  // intervals
+  const double d = 1.0 / static_cast<double>(n);
+  if (n == 1) return 0.5 * d * (y[0] + y[1]);
+  const std::size_t simpson_end = n % 2 == 0 ? n : n - 3;
+  double sum = 0.0;
+  for (std::size_t j = 0; j + 2 <= simpson_end; j += 2) sum += d / 3.0 * (y[j] + 4.0 * y[j + 1] + y[j + 2]);
+  if (simpson_end != n) {
+    const std::size_t j = simpson_end;
+    sum += 3.0 * d / 8.0 * (y[j] + 3.0 * y[j + 1] + 3.0 * y[j + 2] + y[j + 3]);
+  }
+  return sum;
+}
+
+/// ∫ y ds on graded nodes (trapezoid).
+double integrate_graded(const std::vector<double>& y, const std::vector<double>& s) {
+  double sum = 0.0;
+  for (std::size_t k = 0; k + 1 < s.size(); ++k) sum += 0.5 * (y[k] + y[k + 1]) * (s[k + 1] - s[k]);
+  return sum;
+}
+
+/// Solves the tridiagonal system (sub, diag, sup)·x = rhs with GSL (gsl_linalg_solve_tridiag).
+std::vector<double> solve_tridiagonal(std::vector<double> sub, std::vector<double> diag, std::vector<double> sup,
+                                      std::vector<double> rhs) {
+  std::vector<double> x(diag.size());
+  gsl_vector_view d = gsl_vector_view_array(diag.data(), diag.size());
+  gsl_vector_view e = gsl_vector_view_array(sup.data(), sup.size());
+  gsl_vector_view f = gsl_vector_view_array(sub.data(), sub.size());
+  gsl_vector_view b = gsl_vector_view_array(rhs.data(), rhs.size());
+  gsl_vector_view out = gsl_vector_view_array(x.data(), x.size());
+  if (gsl_linalg_solve_tridiag(&d.vector, &e.vector, &f.vector, &b.vector, &out.vector) != 0)
+    throw std::runtime_error("film temperature: singular column system");
+  return x;
+}
+}  // namespace
+
+FilmTemperature::FilmTemperature(std::vector<double> x, double Ua, double Ub, double half_width,
+                                 const lubricant::ThermalRheology& rheology, const SolidThermalData& solids,
+                                 FilmTemperatureOptions options)
+    : x_(std::move(x)), Ua_(Ua), Ub_(Ub), rheology_(rheology), solids_(solids), o_(options),
+      T0_(rheology.data().inlet_temperature) {
+  if (o_.film_nodes < 4 || o_.film_nodes > 200)
+    throw InputError(fmt::format("thermal.film_nodes = {} must lie in [4, 200]", o_.film_nodes));
+  if (o_.solid_nodes < 3 || o_.solid_nodes > 200)
+    throw InputError(fmt::format("thermal.solid_nodes = {} must lie in [3, 200]", o_.solid_nodes));
+  if (Ua < 0.0 || Ub < 0.0)
+    throw InputError(fmt::format("surface speeds [{}, {}] m/s: the thermal model needs both ≥ 0 (surfaces "
+                                 "moving through the contact in the rolling direction)", Ua, Ub));
+  for (int s = 0; s < 2; ++s) {
+    const char* names[] = {"solids.thermal_conductivity_W_per_mK", "solids.specific_heat_J_per_kgK",
+                           "solids.density_kg_m3"};
+    const double values[] = {solids.conductivity[s], solids.specific_heat[s], solids.density[s]};
+    for (int q = 0; q < 3; ++q)
+      if (!(values[q] > 0.0) || !std::isfinite(values[q]))
+        throw InputError(fmt::format("{}[{}] = {} must be a positive finite number", names[q], s, values[q]));
+  }
+  dx_ = x_[1] - x_[0];
+  // Depth d: three thermal penetration lengths √(κ_s·L/U_s) of the slower solid over the
+  // domain length L (the temperature rise of a moving half-space decays as erfc(s/(2√(κt)));
+  // at s = 3√(κt) it is below 3 % of the surface rise), capped at L for slow surfaces.
+  const double L = x_.back() - x_.front();
+  if (o_.depth > 0.0) {
+    depth_ = o_.depth;
+  } else {
+    depth_ = 0.0;
+    for (int s = 0; s < 2; ++s) {
+      const double kappa = solids.conductivity[s] / (solids.density[s] * solids.specific_heat[s]);
+      const double U = s == 0 ? Ua : Ub;
+      depth_ = std::max(depth_, U > 0.0 ? 3.0 * std::sqrt(kappa * L / U) : L);
+    }
+    depth_ = std::max(std::min(depth_, L), half_width);
+  }
+  zeta_.resize(static_cast<std::size_t>(o_.film_nodes));
+  for (std::size_t j = 0; j < zeta_.size(); ++j) zeta_[j] = static_cast<double>(j) / static_cast<double>(zeta_.size() - 1);
+  // Quadratically graded solid nodes, fine at the wall where the gradients are.
+  s_.resize(static_cast<std::size_t>(o_.solid_nodes));
+  for (std::size_t k = 0; k < s_.size(); ++k) {
+    const double t = static_cast<double>(k) / static_cast<double>(s_.size() - 1);
+    s_[k] = depth_ * t * t;
+  }
+  T_.assign(x_.size(), std::vector<double>(zeta_.size(), T0_));
+  for (auto& body : Ts_) body.assign(x_.size(), std::vector<double>(s_.size(), T0_));
+  Q_.assign(x_.size(), std::vector<double>(zeta_.size(), 0.0));
+}
+
+double FilmTemperature::dpdx_at(const std::vector<double>& p, std::size_t i, double dx) {
+  if (i == 0) return (p[1] - p[0]) / dx;
+  if (i + 1 == p.size()) return (p[i] - p[i - 1]) / dx;
+  return (p[i + 1] - p[i - 1]) / (2.0 * dx);
+}
+
+ColumnFlow FilmTemperature::column_flow(std::size_t i, double p, double dpdx, double h) const {
+  const std::size_t nz = zeta_.size();
+  const double dz = 1.0 / static_cast<double>(nz - 1);
+  ColumnFlow c;
+  c.eta.resize(nz);
+  c.rho.resize(nz);
+  for (std::size_t j = 0; j < nz; ++j) {
+    c.eta[j] = rheology_.viscosity(p, T_[i][j]);
+    c.rho[j] = rheology_.density(p, T_[i][j]);
+  }
+  c.f0.assign(nz, 0.0);
+  c.f1.assign(nz, 0.0);
+  for (std::size_t j = 1; j < nz; ++j) {  // trapezoid: exact for f0, f1 when η is uniform
+    c.f0[j] = c.f0[j - 1] + 0.5 * dz * (1.0 / c.eta[j - 1] + 1.0 / c.eta[j]);
+    c.f1[j] = c.f1[j - 1] + 0.5 * dz * (zeta_[j - 1] / c.eta[j - 1] + zeta_[j] / c.eta[j]);
+  }
+  c.eta_e = 1.0 / c.f0.back();
+  c.eta_e_prime = 1.0 / c.f1.back();
+  std::vector<double> y(nz);
+  c.rho_e = integrate_nodes(c.rho);
+  for (std::size_t j = 0; j < nz; ++j) y[j] = c.rho[j] * c.f0[j];
+  c.rho_e1 = integrate_nodes(y);
+  for (std::size_t j = 0; j < nz; ++j) y[j] = c.rho[j] * c.f1[j];
+  c.rho_e2 = integrate_nodes(y);
+  const double ratio = c.eta_e / c.eta_e_prime;
+  const double dU = Ub_ - Ua_;
+  c.u.resize(nz);
+  c.shear_rate.resize(nz);
+  for (std::size_t j = 0; j < nz; ++j) {
+    c.u[j] = Ua_ + dpdx * h * h * (c.f1[j] - ratio * c.f0[j]) + c.eta_e * dU * c.f0[j];
+    c.shear_rate[j] = (dpdx * h * (zeta_[j] - ratio) + c.eta_e * dU / h) / c.eta[j];
+  }
+  return c;
+}
+
+std::vector<double> FilmTemperature::mass_flux_profile(const ColumnFlow& flow, double h) const {
+  const double dz = 1.0 / static_cast<double>(zeta_.size() - 1);
+  std::vector<double> Q(zeta_.size(), 0.0);
+  for (std::size_t j = 1; j < Q.size(); ++j)
+    Q[j] = Q[j - 1] + 0.5 * dz * h * (flow.rho[j - 1] * flow.u[j - 1] + flow.rho[j] * flow.u[j]);
+  return Q;
+}
+
+void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, const std::vector<double>& h) {
+  const std::size_t nz = zeta_.size(), ns = s_.size(), n = x_.size();
+  const double dz = 1.0 / static_cast<double>(nz - 1);
+  const double dpdx = dpdx_at(p, i, dx_);
+  const ColumnFlow flow = column_flow(i, p[i], dpdx, h[i]);
+  const double k = rheology_.data().thermal_conductivity, c = rheology_.data().specific_heat;
+  const double hi = h[i];
+  // ∂Q/∂x at fixed ζ from the neighbouring columns of the last sweep.
+  std::vector<double> Qx(nz, 0.0);
+  for (std::size_t j = 0; j < nz; ++j)
+    Qx[j] = i + 1 < n ? (Q_[i + 1][j] - Q_[i - 1][j]) / (2.0 * dx_) : (Q_[i][j] - Q_[i - 1][j]) / dx_;
+  Q_[i] = mass_flux_profile(flow, hi);
+
+  // Unknowns: solid a from the deepest free node up to k = 1, the film j = 0..nz−1 (the
+  // walls are j = 0 and nz−1), solid b from k = 1 down to the deepest free node.
+  const std::size_t na = ns - 2, N = 2 * na + nz;
+  auto row_a = [&](std::size_t kk) { return na - kk; };
+  auto row_film = [&](std::size_t j) { return na + j; };
+  auto row_b = [&](std::size_t kk) { return na + nz - 1 + kk; };
+  std::vector<double> sub(N - 1, 0.0), diag(N, 0.0), sup(N - 1, 0.0), rhs(N, 0.0);
+  auto add = [&](std::size_t r, double prev, double d, double next, double b) {
+    if (r > 0) sub[r - 1] += prev;
+    diag[r] += d;
+    if (r + 1 < N) sup[r] += next;
+    rhs[r] += b;
+  };
+
+  // Heat source S = S* + S'·(T − T*) about the last temperature T* (Patankar 1980, §4.2.5):
+  // shear heating η(∂u/∂z)² at the frozen shear rate falls with temperature as η does,
+  // S' = S·∂ln η/∂T < 0, which goes on the diagonal; without it the first sweep of a
+  // sliding contact overshoots (cold, viscous film → huge heating → hot, thin oil → ...).
+  // Compression work stays explicit.
+  struct Source {
+    double value = 0.0, slope = 0.0;  // S*, S' ≤ 0
+  };
+  auto source = [&](std::size_t j) {
+    Source S;
+    const double T = T_[i][j];
+    if (o_.shear_heating) {
+      const double heating = flow.eta[j] * flow.shear_rate[j] * flow.shear_rate[j];
+      const double dT = 1e-3;
+      const double dln_eta = (std::log(rheology_.viscosity(p[i], T + dT)) - std::log(flow.eta[j])) / dT;
+      S.value += heating;
+      S.slope += std::min(0.0, heating * dln_eta);
+    }
+    if (o_.compression) S.value -= T * rheology_.thermal_expansion(p[i], T) * flow.u[j] * dpdx;
+    return S;
+  };
+
+  // Solids: ρ_s c_s U_s (T − T_upstream)/Δx = k_s ∂²T/∂s² on the graded nodes.
+  for (int body = 0; body < 2; ++body) {
+    const double ks = solids_.conductivity[body];
+    const double C = solids_.density[body] * solids_.specific_heat[body] * (body == 0 ? Ua_ : Ub_) / dx_;
+    for (std::size_t kk = 1; kk + 1 < ns; ++kk) {
+      const double span = s_[kk + 1] - s_[kk - 1];
+      const double deeper = 2.0 * ks / (span * (s_[kk + 1] - s_[kk]));
+      const double shallower = 2.0 * ks / (span * (s_[kk] - s_[kk - 1]));
+      double b = C * Ts_[body][i - 1][kk];
+      const bool deepest = kk + 2 == ns;
+      if (deepest) b += deeper * T0_;
+      if (body == 0)  // ordering deep → shallow: the deeper node is the previous row
+        add(row_a(kk), deepest ? 0.0 : -deeper, C + deeper + shallower, -shallower, b);
+      else            // ordering shallow → deep
+        add(row_b(kk), -shallower, C + deeper + shallower, deepest ? 0.0 : -deeper, b);
+    }
+  }
+
+  // Film interior: upwind convection in x, hybrid (central/upwind) across the film.
+  const double D = k / (hi * hi * dz * dz);
+  for (std::size_t j = 1; j + 1 < nz; ++j) {
+    const double a = c * flow.rho[j] * flow.u[j] / dx_;
+    const Source S = source(j);
+    double d = 2.0 * D - S.slope, prev = -D, next = -D, b = S.value - S.slope * T_[i][j];
+    if (a >= 0.0) {
+      d += a;
+      b += a * T_[i - 1][j];
+    } else if (i + 1 < n) {
+      d -= a;
+      b -= a * T_[i + 1][j];
+    }
+    const double v = -c * Qx[j] / hi;  // coefficient of ∂T/∂ζ
+    if (std::abs(v) * dz <= 2.0 * k / (hi * hi)) {  // cell Péclet ≤ 1: central
+      prev -= v / (2.0 * dz);
+      next += v / (2.0 * dz);
+    } else if (v > 0.0) {
+      d += v / dz;
+      prev -= v / dz;
+    } else {
+      d -= v / dz;
+      next += v / dz;
+    }
+    add(row_film(j), prev, d, next, b);
+  }
+
+  // Walls: half-cell energy balances with conduction from the film and the solid, the
+  // half cells' convection with the surface speed, and the film half cell's heat source.
+  for (int body = 0; body < 2; ++body) {
+    const std::size_t j = body == 0 ? 0 : nz - 1;
+    const double U = body == 0 ? Ua_ : Ub_;
+    const double film_g = k / (hi * dz), solid_g = solids_.conductivity[body] / s_[1];
+    const double storage = (0.5 * s_[1] * solids_.density[body] * solids_.specific_heat[body] +
+                            0.5 * hi * dz * c * flow.rho[j]) * U / dx_;
+    const Source S = source(j);
+    const double half = 0.5 * hi * dz;
+    const double b = storage * T_[i - 1][j] + half * (S.value - S.slope * T_[i][j]);
+    const double d = film_g + solid_g + storage - half * S.slope;
+    if (body == 0)  // neighbours: solid a's first node (previous row), the film (next)
+      add(row_film(j), -solid_g, d, -film_g, b);
+    else
+      add(row_film(j), -film_g, d, -solid_g, b);
+  }
+
+  const std::vector<double> T = solve_tridiagonal(sub, diag, sup, rhs);
+  for (std::size_t j = 0; j < nz; ++j) T_[i][j] = T[row_film(j)];
+  for (std::size_t kk = 1; kk + 1 < ns; ++kk) {
+    Ts_[0][i][kk] = T[row_a(kk)];
+    Ts_[1][i][kk] = T[row_b(kk)];
+  }
+  Ts_[0][i][0] = T_[i][0];
+  Ts_[1][i][0] = T_[i][nz - 1];
+}
+
+double FilmTemperature::sweep(const std::vector<double>& p, const std::vector<double>& h) {
+  double change = 0.0;
+  const std::vector<std::vector<double>> before = T_;
+  if (Q_[0].back() == 0.0) {  // the inlet column's flux (T0 there)
+    const ColumnFlow flow = column_flow(0, p[0], dpdx_at(p, 0, dx_), h[0]);
+    Q_[0] = mass_flux_profile(flow, h[0]);
+  }
+  for (std::size_t i = 1; i < x_.size(); ++i) solve_column(i, p, h);
+  for (std::size_t i = 0; i < x_.size(); ++i)
+    for (std::size_t j = 0; j < zeta_.size(); ++j) {
+      if (!std::isfinite(T_[i][j]))
+        throw ConvergenceError(fmt::format("film temperature: non-finite temperature at x = {:.4g} m", x_[i]));
+      change = std::max(change, std::abs(T_[i][j] - before[i][j]));
+    }
+  return change;
+}
+
+double FilmTemperature::solve(const std::vector<double>& p, const std::vector<double>& h, double tolerance,
+                              int max_sweeps) {
+  double change = 0.0;
+  for (int s = 0; s < max_sweeps; ++s) {
+    change = sweep(p, h);
+    if (change <= tolerance) break;
+  }
+  return change;
+}
+
+HeatBalance FilmTemperature::heat_balance(const std::vector<double>& p, const std::vector<double>& h) const {
+  HeatBalance hb;
+  const std::size_t n = x_.size(), nz = zeta_.size(), ns = s_.size();
+  const double c = rheology_.data().specific_heat;
+  std::vector<double> y(nz);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double w = (i == 0 || i + 1 == n) ? 0.5 * dx_ : dx_;
+    const double dpdx = dpdx_at(p, i, dx_);
+    const ColumnFlow flow = column_flow(i, p[i], dpdx, h[i]);
+    for (std::size_t j = 0; j < nz; ++j) y[j] = flow.eta[j] * flow.shear_rate[j] * flow.shear_rate[j];
+    if (o_.shear_heating) hb.shear_heating += w * h[i] * integrate_nodes(y);
+    for (std::size_t j = 0; j < nz; ++j)
+      y[j] = -T_[i][j] * rheology_.thermal_expansion(p[i], T_[i][j]) * flow.u[j] * dpdx;
+    if (o_.compression) hb.compression += w * h[i] * integrate_nodes(y);
+    for (int body = 0; body < 2; ++body)
+      hb.depth_loss[body] += w * solids_.conductivity[body] * (Ts_[body][i][ns - 2] - T0_) / (s_[ns - 1] - s_[ns - 2]);
+    if (i + 1 == n) {
+      for (std::size_t j = 0; j < nz; ++j) y[j] = flow.rho[j] * c * flow.u[j] * (T_[i][j] - T0_);
+      hb.film_outflow = h[i] * integrate_nodes(y);
+    }
+  }
+  for (int body = 0; body < 2; ++body) {
+    std::vector<double> rise(ns);
+    for (std::size_t k = 0; k < ns; ++k) rise[k] = Ts_[body][n - 1][k] - T0_;
+    hb.solid_outflow[body] = solids_.density[body] * solids_.specific_heat[body] * (body == 0 ? Ua_ : Ub_) *
+                             integrate_graded(rise, s_);
+  }
+  return hb;
+}
+
+}  // namespace gearbench::ehl

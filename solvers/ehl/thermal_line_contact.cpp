@@ -1,0 +1,195 @@
+#include "thermal_line_contact.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "fas_multigrid.h"
+#include "model/errors.h"
+
+namespace gearbench::ehl {
+
+void ThermalEhlOptions::validate() const {
+  grid.validate();
+  if (max_iterations < 1 || max_iterations > 10000)
+    throw InputError(fmt::format("thermal.max_iterations = {}: allowed range is [1, 10000]", max_iterations));
+  if (cycles_per_iteration < 1 || cycles_per_iteration > 1000)
+    throw InputError(fmt::format("thermal.cycles_per_iteration = {}: allowed range is [1, 1000]", cycles_per_iteration));
+  if (sweeps_per_iteration < 1 || sweeps_per_iteration > 1000)
+    throw InputError(fmt::format("thermal.sweeps_per_iteration = {}: allowed range is [1, 1000]", sweeps_per_iteration));
+  if (!(temperature_tolerance > 0.0 && temperature_tolerance < 10.0))
+    throw InputError(fmt::format("thermal.temperature_tolerance = {}: allowed range is (0, 10)", temperature_tolerance));
+  if (!(film_tolerance > 0.0 && film_tolerance < 0.1))
+    throw InputError(fmt::format("thermal.film_tolerance = {}: allowed range is (0, 0.1)", film_tolerance));
+  if (!(factor_relaxation > 0.0 && factor_relaxation <= 1.0))
+    throw InputError(fmt::format("thermal.factor_relaxation = {}: allowed range is (0, 1]", factor_relaxation));
+  if (eyring_stress && !(*eyring_stress > 0.0 && std::isfinite(*eyring_stress)))
+    throw InputError(fmt::format("lubricant.eyring_stress_MPa = {}: must be positive", *eyring_stress * 1e-6));
+}
+
+std::string ThermalEhlResult::summary() const {
+  return fmt::format("{} thermal iterations, {:.3f} s; h_min {:.4e} m (isothermal {:.4e}), h_c {:.4e} m, "
+                     "p_max {:.4e} Pa, film temperature rise {:.2f} K",
+                     iterations, seconds, h_min, isothermal_h_min, h_central, p_max, temperature_rise_max);
+}
+
+ThermalLineContact::ThermalLineContact(const LineContactData& contact, const lubricant::ThermalRheology& rheology,
+                                       const SolidThermalData& solids, ThermalEhlOptions options)
+    : data_(contact), rheology_(rheology), solids_(solids), options_(std::move(options)) {
+  options_.validate();
+  data_.viscosity = rheology.inlet_viscosity();
+  data_.roelands_z = rheology.roelands_z();
+  data_.pressure_viscosity = rheology.data().pressure_viscosity;
+  data_.viscosity_model = ViscosityModel::roelands;
+  data_.density_model = DensityModel::dowson_higginson;
+}
+
+ThermalEhlResult ThermalLineContact::solve() const {
+  auto r = try_solve();
+  if (!r.converged)
+    throw ConvergenceError(fmt::format(
+        "thermal EHL did not converge in {} iterations (last temperature change {:.3e} K, relative tolerance {:.1e}; "
+        "pressure solve {}); {}",
+        r.iterations, r.temperature_change_history.empty() ? 0.0 : r.temperature_change_history.back(),
+        options_.temperature_tolerance, r.pressure.converged ? "converged" : "NOT converged", r.summary()));
+  return r;
+}
+
+namespace {
+double largest_change(const std::vector<std::vector<double>>& a, const std::vector<std::vector<double>>& b) {
+  double change = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < a[i].size(); ++j) change = std::max(change, std::abs(a[i][j] - b[i][j]));
+  return change;
+}
+}  // namespace
+
+ThermalEhlResult ThermalLineContact::try_solve() const {
+  const auto start = std::chrono::steady_clock::now();
+  const LineContactProblem problem(data_);
+  const EhlResult isothermal = LineContactSolver(problem, options_.grid).solve();
+  ThermalEhlResult r;
+  r.isothermal_h_central = isothermal.h_central;
+  r.isothermal_h_min = isothermal.h_min;
+  r.isothermal_p_max = isothermal.p_max;
+  r.isothermal_friction_coefficient = isothermal.friction_coefficient;
+  r.pressure_cycles = isothermal.cycles;
+  r.work_units = isothermal.work_units;
+
+  const std::size_t n = isothermal.X.size();
+  const double ls = problem.length_scale(), ps = problem.pressure_scale(), hs = problem.film_scale();
+  std::vector<double> x(n), p(n), h(n);
+  for (std::size_t i = 0; i < n; ++i) x[i] = isothermal.X[i] * ls;
+  FilmTemperature field(x, data_.u1, data_.u2, problem.hertz_half_width(), rheology_, solids_, options_.film);
+  const double T0 = rheology_.data().inlet_temperature;
+
+  EhlResult current = isothermal;
+  ContactState state;
+  state.flow_factor.assign(n, 1.0);
+  state.wedge_factor.assign(n, 1.0);
+  double h_min_before = isothermal.h_min;
+  bool temperature_settled = false;
+  for (int it = 0; it < options_.max_iterations; ++it) {
+    for (std::size_t i = 0; i < n; ++i) {
+      p[i] = current.P[i] * ps;
+      h[i] = std::max(current.H[i], 0.0) * hs;
+    }
+    const auto before = field.film();
+    field.solve(p, h, 1e-4, options_.sweeps_per_iteration);
+    // Generalized-Reynolds factors relative to the isothermal coefficients at the same p.
+    for (std::size_t i = 0; i < n; ++i) {
+      const ColumnFlow flow = field.column_flow(i, p, h);
+      const double rho_iso = rheology_.density(p[i], T0), eta_iso = rheology_.viscosity(p[i], T0);
+      const double flow_factor = flow.rho_over_eta_e() * eta_iso / rho_iso;
+      const double wedge_factor = flow.rho_star(data_.u1, data_.u2) / rho_iso;
+      state.flow_factor[i] += options_.factor_relaxation * (flow_factor - state.flow_factor[i]);
+      state.wedge_factor[i] += options_.factor_relaxation * (wedge_factor - state.wedge_factor[i]);
+    }
+    // A few cycles per iteration while the temperature still moves; the iteration ends only
+    // on a pressure solve that met the multigrid tolerance.
+    EhlOptions inner = options_.grid;
+    if (!temperature_settled) inner.max_cycles = std::min(inner.max_cycles, options_.cycles_per_iteration);
+    EhlResult next = FasMultigrid(problem, inner, state).solve(WarmStart{current.P, current.H0, 0.0});
+    r.pressure_cycles += next.cycles;
+    r.work_units += next.work_units;
+    ++r.iterations;
+    const double change = largest_change(field.film(), before);
+    r.temperature_change_history.push_back(change);
+    r.h_min_history.push_back(next.h_min);
+    current = std::move(next);
+    if (!std::isfinite(current.h_min) || current.residual_history.empty() ||
+        !std::isfinite(current.residual_history.back()))
+      break;
+    const double film_change = std::abs(current.h_min - h_min_before) / current.h_min;
+    h_min_before = current.h_min;
+    double rise = 0.0;
+    for (const auto& column : field.film())
+      for (double T : column) rise = std::max(rise, T - T0);
+    const double tolerance = options_.temperature_tolerance * std::max(rise, 10.0);
+    temperature_settled = it > 0 && change <= tolerance && film_change <= options_.film_tolerance;
+    if (temperature_settled && current.converged) {
+      r.converged = true;
+      break;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    p[i] = current.P[i] * ps;
+    h[i] = std::max(current.H[i], 0.0) * hs;
+  }
+  fill_figures(problem, current, field, r);
+  r.heat = field.heat_balance(p, h);
+  r.pressure = std::move(current);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+void ThermalLineContact::fill_figures(const LineContactProblem& problem, const EhlResult& pressure,
+                                      const FilmTemperature& field, ThermalEhlResult& r) const {
+  const double ls = problem.length_scale(), ps = problem.pressure_scale(), hs = problem.film_scale();
+  const std::size_t n = pressure.X.size();
+  r.h_central = pressure.h_central;
+  r.h_min = pressure.h_min;
+  r.x_h_min = pressure.x_h_min;
+  r.p_max = pressure.p_max;
+  r.x.resize(n);
+  r.p.resize(n);
+  r.h.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    r.x[i] = pressure.X[i] * ls;
+    r.p[i] = pressure.P[i] * ps;
+    r.h[i] = std::max(pressure.H[i], 0.0) * hs;
+  }
+  r.zeta = field.film_coordinates();
+  r.solid_depth = field.solid_coordinates();
+  r.film_temperature = field.film();
+  r.solid_temperature = {field.solid(0), field.solid(1)};
+  r.depth = field.depth();
+  const double T0 = field.inlet_temperature();
+  const std::size_t nz = r.zeta.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < nz; ++j)
+      if (r.film_temperature[i][j] - T0 > r.temperature_rise_max) {
+        r.temperature_rise_max = r.film_temperature[i][j] - T0;
+        r.x_temperature_rise_max = r.x[i];
+      }
+    r.wall_temperature_rise_max[0] = std::max(r.wall_temperature_rise_max[0], r.film_temperature[i][0] - T0);
+    r.wall_temperature_rise_max[1] = std::max(r.wall_temperature_rise_max[1], r.film_temperature[i][nz - 1] - T0);
+  }
+  // Traction on surface a, τ = η·∂u/∂z at ζ = 0, where the film is pressurised (as the
+  // isothermal solver: the cavitated film carries no full-film shear).
+  const double dx = r.x[1] - r.x[0];
+  double newtonian = 0.0, eyring = 0.0;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    if (r.p[i] <= 0.0 || r.h[i] <= 0.0) continue;
+    const ColumnFlow flow = field.column_flow(i, r.p, r.h);
+    const double tau = flow.eta[0] * flow.shear_rate[0];
+    newtonian += tau * dx;
+    if (options_.eyring_stress) eyring += *options_.eyring_stress * std::asinh(tau / *options_.eyring_stress) * dx;
+  }
+  r.friction_force = newtonian;
+  r.friction_coefficient = newtonian / data_.load_per_length;
+  if (options_.eyring_stress) r.friction_coefficient_eyring = eyring / data_.load_per_length;
+}
+
+}  // namespace gearbench::ehl

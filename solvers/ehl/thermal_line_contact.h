@@ -1,0 +1,101 @@
+#pragma once
+// Steady thermal line-contact EHL (TEHL), seed 001 §1–2: the generalized Reynolds equation
+// of Yang Peiran with the effective film coefficients (ρ/η)_e and ρ* of a temperature field
+// across the film, the film equation with deformation, the load balance, and the energy
+// equation in the film and both solids (film_temperature.h). Pipeline:
+//   1. the isothermal solution at the inlet temperature (LineContactSolver);
+//   2. temperature sweeps for the current pressure and film;
+//   3. the generalized-Reynolds factors per node, (ρ/η)_e/(ρ/η)_iso and ρ*/ρ_iso at the node's
+//      pressure, frozen into the FAS multigrid, which re-solves pressure and film from the
+//      last solution;
+//   4. back to 2 until the temperature and the minimum film stop changing.
+// At the fixed point the factors are those of the converged temperature and pressure, so the
+// solution is the coupled one; freezing them only changes the path to it. Temperature lives
+// on the finest pressure grid (the coarse grids inject its factors), a simplification of
+// seed 001's finest-and-coarsest scheme.
+// Traction: Newtonian wall shear from the thermal velocity profile; optionally an Eyring
+// limit τ = τ0·asinh(τ_N/τ0) applied to that shear (post-processing: the film equations stay
+// Newtonian, which is accurate for the film and overestimates shear heating at high slip).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "film_temperature.h"
+#include "line_contact_solver.h"
+
+namespace gearbench::ehl {
+
+struct ThermalEhlOptions {
+  EhlOptions grid;                     ///< the isothermal machinery (levels, cycles, tolerance)
+  FilmTemperatureOptions film;         ///< nodes across the film and into the solids, switches
+  int max_iterations = 60;             ///< pressure–temperature iterations (cap: an error beyond)
+  int sweeps_per_iteration = 8;        ///< temperature sweeps between pressure solves
+  int cycles_per_iteration = 4;        ///< multigrid cycles per pressure solve (the last one
+                                       ///< must also meet the multigrid tolerance)
+  /// Largest temperature change between iterations, relative to the film's largest rise
+  /// (at least 10 K, so 1e-2 K for nearly isothermal contacts): 1e-3 settles h_min to ~1e-5
+  /// (measured in thermal_ehl_test).
+  double temperature_tolerance = 1e-3;
+  double film_tolerance = 1e-5;        ///< relative change of h_min between iterations
+  double factor_relaxation = 0.7;      ///< new factors = old + ω·(computed − old)
+  std::optional<double> eyring_stress; ///< τ0 [Pa] for the Eyring traction limit
+
+  void validate() const;               ///< InputError naming the key
+};
+
+struct ThermalEhlResult {
+  // Figures (SI).
+  double h_central = 0.0, h_min = 0.0, x_h_min = 0.0, p_max = 0.0;
+  double temperature_rise_max = 0.0;        ///< film, max(T − T0) [K]
+  double x_temperature_rise_max = 0.0;      ///< its position [m]
+  std::array<double, 2> wall_temperature_rise_max{};  ///< surfaces a (pinion) and b [K]
+  double friction_force = 0.0;              ///< Newtonian traction on surface a, per length [N/m]
+  double friction_coefficient = 0.0;
+  std::optional<double> friction_coefficient_eyring;
+  // Isothermal solution at T0 (the start), for comparison.
+  double isothermal_h_central = 0.0, isothermal_h_min = 0.0, isothermal_p_max = 0.0;
+  double isothermal_friction_coefficient = 0.0;
+  HeatBalance heat;                          ///< per unit length [W/m]
+  // Fields for figures: x [m], p [Pa], h [m], and T [K] at ζ_j (film) and s_k (solids).
+  std::vector<double> x, p, h, zeta, solid_depth;
+  std::vector<std::vector<double>> film_temperature;                ///< [i][j]
+  std::array<std::vector<std::vector<double>>, 2> solid_temperature; ///< [body][i][k]
+  // Diagnostics.
+  bool converged = false;
+  int iterations = 0;
+  std::vector<double> temperature_change_history;  ///< [K] per iteration
+  std::vector<double> h_min_history;                ///< [m] per iteration
+  int pressure_cycles = 0;
+  double work_units = 0.0;
+  double depth = 0.0;                               ///< solid depth d [m]
+  double seconds = 0.0;
+  EhlResult pressure;                               ///< the last multigrid result
+
+  [[nodiscard]] std::string summary() const;
+};
+
+class ThermalLineContact {
+ public:
+  /// `contact` carries radius, load, speeds and E′ (its lubricant fields are replaced by the
+  /// rheology's at the inlet temperature).
+  ThermalLineContact(const LineContactData& contact, const lubricant::ThermalRheology& rheology,
+                     const SolidThermalData& solids, ThermalEhlOptions options);
+  /// Throws ConvergenceError (with the histories) when the iteration does not converge.
+  [[nodiscard]] ThermalEhlResult solve() const;
+  /// The same, returning converged = false instead of throwing.
+  [[nodiscard]] ThermalEhlResult try_solve() const;
+
+  /// The isothermal contact data at the inlet temperature (Roelands, Dowson–Higginson).
+  [[nodiscard]] const LineContactData& isothermal_data() const { return data_; }
+
+ private:
+  void fill_figures(const LineContactProblem& problem, const EhlResult& pressure, const FilmTemperature& field,
+                    ThermalEhlResult& r) const;
+
+  LineContactData data_;
+  const lubricant::ThermalRheology& rheology_;
+  SolidThermalData solids_;
+  ThermalEhlOptions options_;
+};
+
+}  // namespace gearbench::ehl

@@ -1,0 +1,57 @@
+#pragma once
+// Temperature- and pressure-dependent viscosity and density of a lubricant for thermal EHL.
+// Temperatures in K, pressures in Pa, viscosities in Pa·s, densities in kg/m³.
+//
+// Two viscosity–temperature laws, selected by the data given:
+//  - Roelands with a temperature term (Roelands 1966, in the form of Yang & Wen, J. Tribol.
+//    112 (1990) 631, eq. 5):
+//      η = η0·exp{(ln η0 + 9.67)·[−1 + (1 + p/p0)^z·((T − 138)/(T0 − 138))^(−S0)]},
+//      S0 = β·(T0 − 138)/(ln η0 + 9.67), β the viscosity–temperature coefficient [1/K];
+//  - Ubbelohde–Walther at ambient pressure (ASTM D341; ISO/TR 15144-1:2010, as quoted by
+//    seed 001 eq. 1.3): lg lg(ν + 0.7) = A·lg T + B with ν in mm²/s and T in K, A and B
+//    from ν40 and ν100; η(T) = ρ(T)·ν(T), and the Roelands pressure factor at η(T) with a
+//    temperature-independent z (Roelands 1966 found z nearly independent of temperature).
+// Density: the linear law of ISO/TR 15144-1 (seed 001 eq. 1.3), ρ(T) = ρ15 − 0.7·(T − 15 °C)
+// [kg/m³], times the Dowson–Higginson pressure factor (5.9e8 + 1.34p)/(5.9e8 + p).
+#include <optional>
+
+namespace gearbench::lubricant {
+
+struct ThermalLubricantData {
+  double inlet_temperature = 0.0;     ///< T0 [K]: where η0 is given and the oil flows in
+  double density_15C = 0.0;           ///< ρ15 [kg/m³] (ISO/TR 15144-1)
+  double pressure_viscosity = 0.0;    ///< α at T0 [1/Pa]: sets z = α·p0/(ln η0 + 9.67)
+  double viscosity = 0.0;             ///< η0 at T0 [Pa·s] (Roelands–temperature form)
+  double temperature_viscosity = 0.0; ///< β [1/K] (Roelands–temperature form)
+  std::optional<double> nu40, nu100;  ///< kinematic viscosities [m²/s] (Walther form)
+  double thermal_conductivity = 0.0;  ///< k [W/(m·K)]
+  double specific_heat = 0.0;         ///< c [J/(kg·K)]
+};
+
+class ThermalRheology {
+ public:
+  /// Throws InputError (naming the lubricant keys) on unphysical data.
+  explicit ThermalRheology(const ThermalLubricantData& data);
+
+  [[nodiscard]] double viscosity(double p, double T) const;      ///< η(p, T)
+  [[nodiscard]] double density(double p, double T) const;        ///< ρ(p, T)
+  /// (1/ρ)·∂ρ/∂T at (p, T) [1/K] (the compression-work coefficient of the energy equation).
+  [[nodiscard]] double thermal_expansion(double p, double T) const;
+  [[nodiscard]] double inlet_viscosity() const { return eta0_; }  ///< η(0, T0)
+  [[nodiscard]] double roelands_z() const { return z_; }
+  [[nodiscard]] const ThermalLubricantData& data() const { return data_; }
+
+  /// Kinematic viscosity by Ubbelohde–Walther [m²/s] (Walther form only).
+  [[nodiscard]] double walther_kinematic_viscosity(double T) const;
+
+ private:
+  [[nodiscard]] double ambient_density(double T) const;  ///< ρ(0, T)
+  [[nodiscard]] double ambient_viscosity(double T) const;  ///< η(0, T)
+
+  ThermalLubricantData data_;
+  bool walther_ = false;
+  double walther_A_ = 0.0, walther_B_ = 0.0;
+  double eta0_ = 0.0, z_ = 0.0, S0_ = 0.0;
+};
+
+}  // namespace gearbench::lubricant
