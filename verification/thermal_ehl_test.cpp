@@ -14,9 +14,10 @@
 namespace gearbench::ehl {
 namespace {
 
-lubricant::ThermalLubricantData roelands_oil() {
-  lubricant::ThermalLubricantData d;
-  d.inlet_temperature = 313.15;
+constexpr double T0 = 313.15;  // inlet temperature [K]
+
+model::ThermalLubricant roelands_oil() {
+  model::ThermalLubricant d;
   d.density_15C = 870.0;
   d.pressure_viscosity = 20e-9;
   d.viscosity = 0.05;
@@ -26,7 +27,7 @@ lubricant::ThermalLubricantData roelands_oil() {
   return d;
 }
 
-lubricant::ThermalLubricantData walther_oil() {
+model::ThermalLubricant walther_oil() {
   auto d = roelands_oil();
   d.viscosity = 0.0;
   d.temperature_viscosity = 0.0;
@@ -35,8 +36,8 @@ lubricant::ThermalLubricantData walther_oil() {
   return d;
 }
 
-SolidThermalData steel() {
-  SolidThermalData s;
+model::ThermalSolids steel() {
+  model::ThermalSolids s;
   s.conductivity = {46.0, 46.0};
   s.specific_heat = {470.0, 470.0};
   s.density = {7850.0, 7850.0};
@@ -61,7 +62,7 @@ ThermalEhlOptions small_grid() {
 
 // Ubbelohde–Walther through its two defining points, to rounding (the law is fitted to them).
 TEST(ThermalRheology, WaltherPassesThroughNu40AndNu100) {
-  const lubricant::ThermalRheology r(walther_oil());
+  const lubricant::ThermalRheology r(walther_oil(), T0);
   EXPECT_NEAR(r.walther_kinematic_viscosity(313.15) / 320e-6, 1.0, 1e-12);
   EXPECT_NEAR(r.walther_kinematic_viscosity(373.15) / 24e-6, 1.0, 1e-12);
   // η(0, T0) = ρ(T0)·ν(T0) with the ISO density law ρ15 − 0.7·(T − 15 °C).
@@ -73,11 +74,11 @@ TEST(ThermalRheology, WaltherPassesThroughNu40AndNu100) {
 // so the thermal factors are exactly 1 in an isothermal film.
 TEST(ThermalRheology, ReducesToIsothermalRoelandsAtInletTemperature) {
   for (const auto& data : {roelands_oil(), walther_oil()}) {
-    const lubricant::ThermalRheology r(data);
+    const lubricant::ThermalRheology r(data, T0);
     for (double p : {0.0, 0.3e9, 1.0e9, 2.0e9}) {
       const double isothermal = lubricant::roelands_viscosity(r.inlet_viscosity(), r.roelands_z(), p);
-      EXPECT_NEAR(r.viscosity(p, data.inlet_temperature) / isothermal, 1.0, 1e-13) << p;
-      EXPECT_NEAR(r.density(p, data.inlet_temperature) / r.density(0.0, data.inlet_temperature),
+      EXPECT_NEAR(r.viscosity(p, T0) / isothermal, 1.0, 1e-13) << p;
+      EXPECT_NEAR(r.density(p, T0) / r.density(0.0, T0),
                   lubricant::dowson_higginson_density_ratio(p), 1e-14);
     }
   }
@@ -85,7 +86,7 @@ TEST(ThermalRheology, ReducesToIsothermalRoelandsAtInletTemperature) {
 
 // The Roelands temperature term: d ln η/dT at p = 0 equals −β (S0 is defined so).
 TEST(ThermalRheology, RoelandsTemperatureSlopeIsBeta) {
-  const lubricant::ThermalRheology r(roelands_oil());
+  const lubricant::ThermalRheology r(roelands_oil(), T0);
   const double T = 313.15, dT = 1e-4;
   const double slope = (std::log(r.viscosity(0.0, T + dT)) - std::log(r.viscosity(0.0, T - dT))) / (2 * dT);
   EXPECT_NEAR(slope, -0.03, 1e-8);
@@ -96,13 +97,12 @@ TEST(ThermalRheology, RoelandsTemperatureSlopeIsBeta) {
 TEST(ThermalRheology, RejectsUnphysicalData) {
   auto d = walther_oil();
   d.nu100 = 400e-6;
-  EXPECT_THROW(lubricant::ThermalRheology{d}, InputError);
+  EXPECT_THROW((lubricant::ThermalRheology{d, T0}), InputError);
   d = roelands_oil();
   d.thermal_conductivity = 0.0;
-  EXPECT_THROW(lubricant::ThermalRheology{d}, InputError);
-  d = roelands_oil();
-  d.inlet_temperature = 150.0;  // below the Roelands pole + margin
-  EXPECT_THROW(lubricant::ThermalRheology{d}, InputError);
+  EXPECT_THROW((lubricant::ThermalRheology{d, T0}), InputError);
+  // Below the Roelands pole (138 K) plus a margin.
+  EXPECT_THROW((lubricant::ThermalRheology{roelands_oil(), 150.0}), InputError);
 }
 
 // Heat sources off: the energy equation has T = T0 as its exact solution, the film integrals
@@ -110,7 +110,7 @@ TEST(ThermalRheology, RejectsUnphysicalData) {
 // and the thermal solution equals the isothermal one to the multigrid tolerance (1e-8 on the
 // scaled residual; 1e-6 relative on the figures leaves room for the re-solve from a warm start).
 TEST(ThermalLineContact, WithoutHeatSourcesEqualsIsothermal) {
-  const lubricant::ThermalRheology rheology(roelands_oil());
+  const lubricant::ThermalRheology rheology(roelands_oil(), T0);
   auto o = small_grid();
   o.film.shear_heating = false;
   o.film.compression = false;
@@ -127,7 +127,7 @@ TEST(ThermalLineContact, WithoutHeatSourcesEqualsIsothermal) {
 // measured 0.4 % at 161–641 nodes; 2 % leaves room without hiding a missing term (the
 // smallest term, the film outflow, is 0.7 % of the total).
 TEST(ThermalLineContact, HeatBalanceCloses) {
-  const lubricant::ThermalRheology rheology(roelands_oil());
+  const lubricant::ThermalRheology rheology(roelands_oil(), T0);
   const auto r = ThermalLineContact(contact(2.5, 1.5), rheology, steel(), small_grid()).solve();
   ASSERT_GT(r.heat.generated(), 0.0);
   EXPECT_NEAR(r.heat.removed() / r.heat.generated(), 1.0, 0.02);
@@ -136,7 +136,7 @@ TEST(ThermalLineContact, HeatBalanceCloses) {
 }
 
 TEST(ThermalLineContact, RejectsBadOptions) {
-  const lubricant::ThermalRheology rheology(roelands_oil());
+  const lubricant::ThermalRheology rheology(roelands_oil(), T0);
   auto o = small_grid();
   o.film.film_nodes = 2;
   EXPECT_THROW(ThermalLineContact(contact(2.0, 2.0), rheology, steel(), o).solve(), InputError);

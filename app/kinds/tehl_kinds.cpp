@@ -47,12 +47,12 @@ json run_tehl_point(const json& case_json) {
   root.optional_string("description");
   const auto contact = read_contact(root);
   const double T0 = read_inlet_temperature(root);
-  auto options = read_thermal_options(root);
-  const auto lubricant = read_thermal_lubricant(root, T0, options.eyring_stress);
-  const auto solids = read_solids(root);
+  const auto options = read_thermal_options(root);
+  const auto lubricant = model::read_thermal_lubricant(root.object("lubricant"));
+  const auto solids = model::read_thermal_solids(root.object("solids"));
   root.finish();
 
-  const lubricant::ThermalRheology rheology(lubricant);
+  const lubricant::ThermalRheology rheology(lubricant, T0);
   const auto r = ehl::ThermalLineContact(contact, rheology, solids, options).try_solve();
   json out = thermal_result_json(r, true);
   out["kind"] = "tehl_point";
@@ -85,15 +85,15 @@ json run_tehl_path(const json& case_json) {
   if (!root.has("operating")) throw InputError("operating: missing required key (kind tehl_path)");
   const auto operating = model::read_operating(root.object("operating"));
   const double T0 = read_inlet_temperature(root);
-  auto options = read_thermal_options(root);
-  const auto lubricant = read_thermal_lubricant(root, T0, options.eyring_stress);
-  const auto solids = read_solids(root);
+  const auto options = read_thermal_options(root);
+  const auto lubricant = model::read_thermal_lubricant(root.object("lubricant"));
+  const auto solids = model::read_thermal_solids(root.object("solids"));
   const auto factors = read_load_factors(root);
   const auto sharing = root.optional_string("load_sharing", {"iso", "equal"}).value_or("iso");
   root.finish();
 
   const geometry::GearPairGeometry geometry(pair);
-  const lubricant::ThermalRheology rheology(lubricant);
+  const lubricant::ThermalRheology rheology(lubricant, T0);
   const ehl::ThermalMeshPath path(geometry, operating, materials, rheology, solids, factors, sharing, options);
   const auto result = path.run();
   json points = json::array();

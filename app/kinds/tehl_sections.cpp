@@ -1,4 +1,4 @@
-// The lubricant, solids and "thermal" sections of the thermal EHL kinds.
+// The "thermal" section and the result JSON of the thermal EHL kinds.
 #include "tehl_sections.h"
 
 #include <fmt/format.h>
@@ -10,41 +10,6 @@ namespace gearbench::app {
 
 using model::Range;
 using nlohmann::json;
-
-lubricant::ThermalLubricantData read_thermal_lubricant(model::ObjectReader& root, double inlet_temperature,
-                                                       std::optional<double>& eyring_stress) {
-  lubricant::ThermalLubricantData d;
-  d.inlet_temperature = inlet_temperature;
-  auto l = root.object("lubricant");
-  d.pressure_viscosity = l.number("pressure_viscosity_1_per_GPa", Range::positive(100.0), "1/GPa") * 1e-9;
-  d.density_15C = l.number("density_kg_m3", {500.0, 2000.0}, "kg/m3");
-  d.thermal_conductivity = l.number("thermal_conductivity_W_per_mK", {0.01, 10.0}, "W/(m*K)");
-  d.specific_heat = l.number("specific_heat_J_per_kgK", {100.0, 1e5}, "J/(kg*K)");
-  const bool walther = l.has("nu40_mm2_s") || l.has("nu100_mm2_s");
-  if (walther && (l.has("viscosity_Pa_s") || l.has("temperature_viscosity_1_per_K")))
-    throw InputError("lubricant: give either viscosity_Pa_s with temperature_viscosity_1_per_K (Roelands) or "
-                     "nu40_mm2_s with nu100_mm2_s (Ubbelohde–Walther), not both");
-  if (walther) {
-    d.nu40 = l.number("nu40_mm2_s", {2.0, 1e6}, "mm2/s") * 1e-6;
-    d.nu100 = l.number("nu100_mm2_s", {2.0, 1e6}, "mm2/s") * 1e-6;
-  } else {
-    d.viscosity = l.number("viscosity_Pa_s", {1e-4, 1e4}, "Pa*s");
-    d.temperature_viscosity = l.number("temperature_viscosity_1_per_K", {0.0, 1.0}, "1/K");
-  }
-  if (auto tau = l.optional_number("eyring_stress_MPa", Range::positive(1e3), "MPa")) eyring_stress = *tau * 1e6;
-  l.finish();
-  return d;
-}
-
-ehl::SolidThermalData read_solids(model::ObjectReader& root) {
-  auto s = root.object("solids");
-  ehl::SolidThermalData d;
-  d.conductivity = s.number_pair("thermal_conductivity_W_per_mK", {0.1, 1e4}, "W/(m*K)");
-  d.specific_heat = s.number_pair("specific_heat_J_per_kgK", {10.0, 1e5}, "J/(kg*K)");
-  d.density = s.number_pair("density_kg_m3", {100.0, 1e5}, "kg/m3");
-  s.finish();
-  return d;
-}
 
 ehl::ThermalEhlOptions read_thermal_options(model::ObjectReader& root) {
   ehl::ThermalEhlOptions o;

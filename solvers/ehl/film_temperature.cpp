@@ -51,10 +51,10 @@ std::vector<double> solve_tridiagonal(std::vector<double> sub, std::vector<doubl
 }  // namespace
 
 FilmTemperature::FilmTemperature(std::vector<double> x, double Ua, double Ub, double half_width,
-                                 const lubricant::ThermalRheology& rheology, const SolidThermalData& solids,
+                                 const lubricant::ThermalRheology& rheology, const model::ThermalSolids& solids,
                                  FilmTemperatureOptions options)
     : x_(std::move(x)), Ua_(Ua), Ub_(Ub), rheology_(rheology), solids_(solids), o_(options),
-      T0_(rheology.data().inlet_temperature) {
+      T0_(rheology.inlet_temperature()) {
   if (o_.film_nodes < 4 || o_.film_nodes > 200)
     throw InputError(fmt::format("thermal.film_nodes = {} must lie in [4, 200]", o_.film_nodes));
   if (o_.solid_nodes < 3 || o_.solid_nodes > 200)

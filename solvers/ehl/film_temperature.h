@@ -21,15 +21,9 @@
 #include <vector>
 
 #include "lubricant/thermal_rheology.h"
+#include "model/materials.h"
 
 namespace gearbench::ehl {
-
-/// Thermal data of the two solids (index 0: surface a, the pinion; 1: surface b).
-struct SolidThermalData {
-  std::array<double, 2> conductivity{};   ///< k_s [W/(m·K)]
-  std::array<double, 2> specific_heat{};  ///< c_s [J/(kg·K)]
-  std::array<double, 2> density{};        ///< ρ_s [kg/m³]
-};
 
 struct FilmTemperatureOptions {
   int film_nodes = 10;        ///< nodes across the film (seed 001: 10)
@@ -71,7 +65,7 @@ class FilmTemperature {
   /// x: uniform nodes [m]; Ua, Ub ≥ 0: surface speeds [m/s]; half_width: the Hertz b [m]
   /// (sets the default depth).
   FilmTemperature(std::vector<double> x, double Ua, double Ub, double half_width,
-                  const lubricant::ThermalRheology& rheology, const SolidThermalData& solids,
+                  const lubricant::ThermalRheology& rheology, const model::ThermalSolids& solids,
                   FilmTemperatureOptions options);
 
   /// One Gauss–Seidel sweep over the columns for pressure p [Pa] and film h [m] (both on x);
@@ -103,7 +97,7 @@ class FilmTemperature {
   std::vector<double> x_;
   double dx_ = 0.0, Ua_ = 0.0, Ub_ = 0.0;
   const lubricant::ThermalRheology& rheology_;
-  SolidThermalData solids_;
+  model::ThermalSolids solids_;
   FilmTemperatureOptions o_;
   double T0_ = 0.0, depth_ = 0.0;
   std::vector<double> zeta_, s_;

@@ -24,8 +24,6 @@ void ThermalEhlOptions::validate() const {
     throw InputError(fmt::format("thermal.film_tolerance = {}: allowed range is (0, 0.1)", film_tolerance));
   if (!(factor_relaxation > 0.0 && factor_relaxation <= 1.0))
     throw InputError(fmt::format("thermal.factor_relaxation = {}: allowed range is (0, 1]", factor_relaxation));
-  if (eyring_stress && !(*eyring_stress > 0.0 && std::isfinite(*eyring_stress)))
-    throw InputError(fmt::format("lubricant.eyring_stress_MPa = {}: must be positive", *eyring_stress * 1e-6));
 }
 
 std::string ThermalEhlResult::summary() const {
@@ -35,7 +33,7 @@ std::string ThermalEhlResult::summary() const {
 }
 
 ThermalLineContact::ThermalLineContact(const LineContactData& contact, const lubricant::ThermalRheology& rheology,
-                                       const SolidThermalData& solids, ThermalEhlOptions options)
+                                       const model::ThermalSolids& solids, ThermalEhlOptions options)
     : data_(contact), rheology_(rheology), solids_(solids), options_(std::move(options)) {
   options_.validate();
   data_.viscosity = rheology.inlet_viscosity();
@@ -82,7 +80,7 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
   std::vector<double> x(n), p(n), h(n);
   for (std::size_t i = 0; i < n; ++i) x[i] = isothermal.X[i] * ls;
   FilmTemperature field(x, data_.u1, data_.u2, problem.hertz_half_width(), rheology_, solids_, options_.film);
-  const double T0 = rheology_.data().inlet_temperature;
+  const double T0 = rheology_.inlet_temperature();
 
   EhlResult current = isothermal;
   ContactState state;
@@ -180,16 +178,17 @@ void ThermalLineContact::fill_figures(const LineContactProblem& problem, const E
   // isothermal solver: the cavitated film carries no full-film shear).
   const double dx = r.x[1] - r.x[0];
   double newtonian = 0.0, eyring = 0.0;
+  const auto tau0 = rheology_.data().eyring_stress;
   for (std::size_t i = 1; i + 1 < n; ++i) {
     if (r.p[i] <= 0.0 || r.h[i] <= 0.0) continue;
     const ColumnFlow flow = field.column_flow(i, r.p, r.h);
     const double tau = flow.eta[0] * flow.shear_rate[0];
     newtonian += tau * dx;
-    if (options_.eyring_stress) eyring += *options_.eyring_stress * std::asinh(tau / *options_.eyring_stress) * dx;
+    if (tau0) eyring += *tau0 * std::asinh(tau / *tau0) * dx;
   }
   r.friction_force = newtonian;
   r.friction_coefficient = newtonian / data_.load_per_length;
-  if (options_.eyring_stress) r.friction_coefficient_eyring = eyring / data_.load_per_length;
+  if (tau0) r.friction_coefficient_eyring = eyring / data_.load_per_length;
 }
 
 }  // namespace gearbench::ehl

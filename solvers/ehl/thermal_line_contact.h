@@ -38,7 +38,6 @@ struct ThermalEhlOptions {
   double temperature_tolerance = 1e-3;
   double film_tolerance = 1e-5;        ///< relative change of h_min between iterations
   double factor_relaxation = 0.7;      ///< new factors = old + ω·(computed − old)
-  std::optional<double> eyring_stress; ///< τ0 [Pa] for the Eyring traction limit
 
   void validate() const;               ///< InputError naming the key
 };
@@ -79,7 +78,7 @@ class ThermalLineContact {
   /// `contact` carries radius, load, speeds and E′ (its lubricant fields are replaced by the
   /// rheology's at the inlet temperature).
   ThermalLineContact(const LineContactData& contact, const lubricant::ThermalRheology& rheology,
-                     const SolidThermalData& solids, ThermalEhlOptions options);
+                     const model::ThermalSolids& solids, ThermalEhlOptions options);
   /// Throws ConvergenceError (with the histories) when the iteration does not converge.
   [[nodiscard]] ThermalEhlResult solve() const;
   /// The same, returning converged = false instead of throwing.
@@ -94,7 +93,7 @@ class ThermalLineContact {
 
   LineContactData data_;
   const lubricant::ThermalRheology& rheology_;
-  SolidThermalData solids_;
+  model::ThermalSolids solids_;
   ThermalEhlOptions options_;
 };
 

@@ -20,7 +20,7 @@ void LoadFactors::validate() const {
 
 ThermalMeshPath::ThermalMeshPath(const geometry::GearPairGeometry& geometry, const model::OperatingPoint& operating,
                                  const std::array<model::Material, 2>& materials,
-                                 const lubricant::ThermalRheology& rheology, const SolidThermalData& solids,
+                                 const lubricant::ThermalRheology& rheology, const model::ThermalSolids& solids,
                                  LoadFactors factors, std::string load_sharing, ThermalEhlOptions options)
     : geometry_(geometry), operating_(operating), materials_(materials), rheology_(rheology), solids_(solids),
       factors_(factors), load_sharing_(std::move(load_sharing)), options_(std::move(options)) {

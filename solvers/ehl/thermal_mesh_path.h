@@ -44,7 +44,7 @@ class ThermalMeshPath {
  public:
   ThermalMeshPath(const geometry::GearPairGeometry& geometry, const model::OperatingPoint& operating,
                   const std::array<model::Material, 2>& materials, const lubricant::ThermalRheology& rheology,
-                  const SolidThermalData& solids, LoadFactors factors, std::string load_sharing,
+                  const model::ThermalSolids& solids, LoadFactors factors, std::string load_sharing,
                   ThermalEhlOptions options);
   /// The contact at each point, without solving (for the ISO comparison and the report).
   [[nodiscard]] std::vector<ThermalPathPoint> contacts() const;
@@ -56,7 +56,7 @@ class ThermalMeshPath {
   model::OperatingPoint operating_;
   std::array<model::Material, 2> materials_;
   const lubricant::ThermalRheology& rheology_;
-  SolidThermalData solids_;
+  model::ThermalSolids solids_;
   LoadFactors factors_;
   std::string load_sharing_;
   ThermalEhlOptions options_;

@@ -23,11 +23,12 @@ void require_positive(double value, const char* key) {
 }
 }  // namespace
 
-ThermalRheology::ThermalRheology(const ThermalLubricantData& data) : data_(data) {
-  require_positive(data.inlet_temperature, "inlet_temperature_K");
-  if (data.inlet_temperature <= roelands_temperature + 20.0)
+ThermalRheology::ThermalRheology(const model::ThermalLubricant& data, double inlet_temperature)
+    : data_(data), T0_(inlet_temperature) {
+  require_positive(T0_, "inlet_temperature_K");
+  if (T0_ <= roelands_temperature + 20.0)
     throw InputError(fmt::format("inlet_temperature_K = {} must exceed {} K (the Roelands temperature "
-                                 "pole is 138 K)", data.inlet_temperature, roelands_temperature + 20.0));
+                                 "pole is 138 K)", T0_, roelands_temperature + 20.0));
   require_positive(data.density_15C, "lubricant.density_kg_m3");
   require_positive(data.pressure_viscosity, "lubricant.pressure_viscosity_1_per_GPa");
   require_positive(data.thermal_conductivity, "lubricant.thermal_conductivity_W_per_mK");
@@ -44,7 +45,7 @@ ThermalRheology::ThermalRheology(const ThermalLubricantData& data) : data_(data)
     // lg lg(ν + 0.7) = A·lg T + B through (313.15 K, ν40) and (373.15 K, ν100).
     walther_A_ = (lglg(*data.nu40 * 1e6) - lglg(*data.nu100 * 1e6)) / (std::log10(T40) - std::log10(T100));
     walther_B_ = lglg(*data.nu40 * 1e6) - walther_A_ * std::log10(T40);
-    eta0_ = ambient_density(data.inlet_temperature) * walther_kinematic_viscosity(data.inlet_temperature);
+    eta0_ = ambient_density(T0_) * walther_kinematic_viscosity(T0_);
   } else {
     require_positive(data.viscosity, "lubricant.viscosity_Pa_s");
     if (data.temperature_viscosity < 0.0 || !std::isfinite(data.temperature_viscosity))
@@ -56,7 +57,7 @@ ThermalRheology::ThermalRheology(const ThermalLubricantData& data) : data_(data)
     throw InputError(fmt::format("lubricant: the inlet viscosity {:.3g} Pa·s is below the Roelands "
                                  "asymptote 6.31e-5 Pa·s", eta0_));
   z_ = roelands_z_from_alpha(eta0_, data.pressure_viscosity);
-  S0_ = data.temperature_viscosity * (data.inlet_temperature - roelands_temperature) /
+  S0_ = data.temperature_viscosity * (T0_ - roelands_temperature) /
         (std::log(eta0_) + roelands_ln_eta_inf);
 }
 
@@ -79,7 +80,7 @@ double ThermalRheology::viscosity(double p, double T) const {
     const double eta_T = ambient_viscosity(T);
     return eta_T * std::exp((std::log(eta_T) + roelands_ln_eta_inf) * (pressure_factor - 1.0));
   }
-  const double theta = (T - roelands_temperature) / (data_.inlet_temperature - roelands_temperature);
+  const double theta = (T - roelands_temperature) / (T0_ - roelands_temperature);
   return eta0_ * std::exp((std::log(eta0_) + roelands_ln_eta_inf) *
                           (-1.0 + pressure_factor * std::pow(theta, -S0_)));
 }

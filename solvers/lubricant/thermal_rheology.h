@@ -13,25 +13,15 @@
 //    temperature-independent z (Roelands 1966 found z nearly independent of temperature).
 // Density: the linear law of ISO/TR 15144-1 (seed 001 eq. 1.3), ρ(T) = ρ15 − 0.7·(T − 15 °C)
 // [kg/m³], times the Dowson–Higginson pressure factor (5.9e8 + 1.34p)/(5.9e8 + p).
-#include <optional>
+#include "model/materials.h"
 
 namespace gearbench::lubricant {
 
-struct ThermalLubricantData {
-  double inlet_temperature = 0.0;     ///< T0 [K]: where η0 is given and the oil flows in
-  double density_15C = 0.0;           ///< ρ15 [kg/m³] (ISO/TR 15144-1)
-  double pressure_viscosity = 0.0;    ///< α at T0 [1/Pa]: sets z = α·p0/(ln η0 + 9.67)
-  double viscosity = 0.0;             ///< η0 at T0 [Pa·s] (Roelands–temperature form)
-  double temperature_viscosity = 0.0; ///< β [1/K] (Roelands–temperature form)
-  std::optional<double> nu40, nu100;  ///< kinematic viscosities [m²/s] (Walther form)
-  double thermal_conductivity = 0.0;  ///< k [W/(m·K)]
-  double specific_heat = 0.0;         ///< c [J/(kg·K)]
-};
-
 class ThermalRheology {
  public:
-  /// Throws InputError (naming the lubricant keys) on unphysical data.
-  explicit ThermalRheology(const ThermalLubricantData& data);
+  /// Throws InputError (naming the lubricant keys) on unphysical data. `inlet_temperature`
+  /// T0 [K] is where η0 and α are given and where the oil flows in.
+  ThermalRheology(const model::ThermalLubricant& data, double inlet_temperature);
 
   [[nodiscard]] double viscosity(double p, double T) const;      ///< η(p, T)
   [[nodiscard]] double density(double p, double T) const;        ///< ρ(p, T)
@@ -39,7 +29,8 @@ class ThermalRheology {
   [[nodiscard]] double thermal_expansion(double p, double T) const;
   [[nodiscard]] double inlet_viscosity() const { return eta0_; }  ///< η(0, T0)
   [[nodiscard]] double roelands_z() const { return z_; }
-  [[nodiscard]] const ThermalLubricantData& data() const { return data_; }
+  [[nodiscard]] const model::ThermalLubricant& data() const { return data_; }
+  [[nodiscard]] double inlet_temperature() const { return T0_; }
 
   /// Kinematic viscosity by Ubbelohde–Walther [m²/s] (Walther form only).
   [[nodiscard]] double walther_kinematic_viscosity(double T) const;
@@ -48,7 +39,8 @@ class ThermalRheology {
   [[nodiscard]] double ambient_density(double T) const;  ///< ρ(0, T)
   [[nodiscard]] double ambient_viscosity(double T) const;  ///< η(0, T)
 
-  ThermalLubricantData data_;
+  model::ThermalLubricant data_;
+  double T0_ = 0.0;
   bool walther_ = false;
   double walther_A_ = 0.0, walther_B_ = 0.0;
   double eta0_ = 0.0, z_ = 0.0, S0_ = 0.0;

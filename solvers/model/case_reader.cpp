@@ -99,6 +99,38 @@ Lubricant read_lubricant(ObjectReader s) {
   return l;
 }
 
+ThermalLubricant read_thermal_lubricant(ObjectReader l) {
+  ThermalLubricant d;
+  d.pressure_viscosity = l.number("pressure_viscosity_1_per_GPa", Range::positive(100.0), "1/GPa") / GPa;
+  d.density_15C = l.number("density_kg_m3", {500.0, 2000.0}, "kg/m3");
+  d.thermal_conductivity = l.number("thermal_conductivity_W_per_mK", {0.01, 10.0}, "W/(m*K)");
+  d.specific_heat = l.number("specific_heat_J_per_kgK", {100.0, 1e5}, "J/(kg*K)");
+  const bool walther = l.has("nu40_mm2_s") || l.has("nu100_mm2_s");
+  if (walther && (l.has("viscosity_Pa_s") || l.has("temperature_viscosity_1_per_K")))
+    throw InputError(l.key_path("viscosity_Pa_s") + ": give either viscosity_Pa_s with "
+                     "temperature_viscosity_1_per_K (Roelands) or nu40_mm2_s with nu100_mm2_s "
+                     "(Ubbelohde–Walther), not both");
+  if (walther) {
+    d.nu40 = l.number("nu40_mm2_s", {2.0, 1e6}, "mm2/s") * 1e-6;
+    d.nu100 = l.number("nu100_mm2_s", {2.0, 1e6}, "mm2/s") * 1e-6;
+  } else {
+    d.viscosity = l.number("viscosity_Pa_s", {1e-4, 1e4}, "Pa*s");
+    d.temperature_viscosity = l.number("temperature_viscosity_1_per_K", {0.0, 1.0}, "1/K");
+  }
+  if (auto tau = l.optional_number("eyring_stress_MPa", Range::positive(1e3), "MPa")) d.eyring_stress = *tau * 1e6;
+  l.finish();
+  return d;
+}
+
+ThermalSolids read_thermal_solids(ObjectReader s) {
+  ThermalSolids d;
+  d.conductivity = s.number_pair("thermal_conductivity_W_per_mK", {0.1, 1e4}, "W/(m*K)");
+  d.specific_heat = s.number_pair("specific_heat_J_per_kgK", {10.0, 1e5}, "J/(kg*K)");
+  d.density = s.number_pair("density_kg_m3", {100.0, 1e5}, "kg/m3");
+  s.finish();
+  return d;
+}
+
 GearCase read_gear_case(ObjectReader& root) {
   GearCase c;
   c.gear_pair = read_gear_pair(root.object("gear_pair"));

@@ -16,6 +16,14 @@ GearPair read_gear_pair(ObjectReader section);
 std::array<Material, 2> read_materials(ObjectReader& root);
 OperatingPoint read_operating(ObjectReader section);
 Lubricant read_lubricant(ObjectReader section);
+/// The "lubricant" section of the thermal EHL kinds: "pressure_viscosity_1_per_GPa",
+/// "density_kg_m3" (ρ15), "thermal_conductivity_W_per_mK", "specific_heat_J_per_kgK", and
+/// either "viscosity_Pa_s" + "temperature_viscosity_1_per_K" or "nu40_mm2_s" + "nu100_mm2_s";
+/// optional "eyring_stress_MPa".
+ThermalLubricant read_thermal_lubricant(ObjectReader section);
+/// "solids": {"thermal_conductivity_W_per_mK": [k1, k2], "specific_heat_J_per_kgK": [c1, c2],
+/// "density_kg_m3": [ρ1, ρ2]}.
+ThermalSolids read_thermal_solids(ObjectReader section);
 
 /// The sections shared by every gear-pair case kind. Sections a kind does not need are
 /// still validated when present, so one case file can serve several kinds.

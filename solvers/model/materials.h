@@ -37,4 +37,24 @@ struct Lubricant {
   std::optional<double> specific_heat;         ///< [J/(kg·K)]
 };
 
+/// A lubricant for thermal EHL: temperature-dependent viscosity (Roelands with β, or
+/// Ubbelohde–Walther from ν40 and ν100) and density (ISO/TR 15144-1 law from ρ15).
+struct ThermalLubricant {
+  double density_15C = 0.0;                  ///< ρ15 [kg/m³]
+  double pressure_viscosity = 0.0;           ///< α at the inlet temperature [1/Pa]
+  double viscosity = 0.0;                    ///< η0 at the inlet temperature [Pa·s] (Roelands form)
+  double temperature_viscosity = 0.0;        ///< β [1/K] (Roelands form)
+  std::optional<double> nu40, nu100;         ///< [m²/s] (Walther form)
+  double thermal_conductivity = 0.0;         ///< k [W/(m·K)]
+  double specific_heat = 0.0;                ///< c [J/(kg·K)]
+  std::optional<double> eyring_stress;       ///< τ0 [Pa], for the Eyring traction limit
+};
+
+/// Thermal data of the two solids (index 0: the pinion / surface a).
+struct ThermalSolids {
+  std::array<double, 2> conductivity{};   ///< k_s [W/(m·K)]
+  std::array<double, 2> specific_heat{};  ///< c_s [J/(kg·K)]
+  std::array<double, 2> density{};        ///< ρ_s [kg/m³]
+};
+
 }  // namespace gearbench::model
