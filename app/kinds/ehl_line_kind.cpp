@@ -16,17 +16,7 @@ using nlohmann::json;
 using model::Range;
 
 ehl::LineContactData read_dimensional(model::ObjectReader& root) {
-  ehl::LineContactData d;
-  auto c = root.object("contact");
-  d.reduced_radius = c.number("reduced_radius_m", Range::positive(10.0), "m");
-  d.load_per_length = c.number("load_per_length_N_per_m", Range::positive(1e10), "N/m");
-  const auto u = c.number_pair("surface_speeds_m_per_s", Range::closed(0.0, 1e3), "m/s");
-  d.u1 = u[0];
-  d.u2 = u[1];
-  if (d.u1 + d.u2 <= 0.0)
-    throw InputError("contact.surface_speeds_m_per_s = [0, 0]: the entrainment speed must be positive");
-  d.reduced_modulus = c.number("reduced_modulus_Pa", {1e6, 1e16}, "Pa");
-  c.finish();
+  ehl::LineContactData d = read_line_contact(root);
   auto l = root.object("lubricant");
   d.viscosity = l.number("viscosity_Pa_s", Range::positive(1e4), "Pa*s");
   d.pressure_viscosity = l.number("pressure_viscosity_1_per_GPa", Range::closed(0.0, 100.0), "1/GPa") * 1e-9;

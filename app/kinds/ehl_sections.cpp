@@ -55,6 +55,21 @@ nlohmann::json finite_vector(const std::vector<double>& v, double scale) {
   return out;
 }
 
+ehl::LineContactData read_line_contact(model::ObjectReader& root) {
+  ehl::LineContactData d;
+  auto c = root.object("contact");
+  d.reduced_radius = c.number("reduced_radius_m", Range::positive(10.0), "m");
+  d.load_per_length = c.number("load_per_length_N_per_m", Range::positive(1e10), "N/m");
+  const auto u = c.number_pair("surface_speeds_m_per_s", Range::closed(0.0, 1e3), "m/s");
+  d.u1 = u[0];
+  d.u2 = u[1];
+  if (d.u1 + d.u2 <= 0.0)
+    throw InputError("contact.surface_speeds_m_per_s = [0, 0]: the entrainment speed must be positive");
+  d.reduced_modulus = c.number("reduced_modulus_Pa", {1e6, 1e16}, "Pa");
+  c.finish();
+  return d;
+}
+
 /// The lubricant and solids of the contact; radius, load and speeds come from the mesh.
 ehl::LineContactData read_gear_fluid(model::ObjectReader& root, const model::GearCase& c, const std::string& kind) {
   if (!c.operating) throw InputError("operating: missing required key (kind " + kind + ")");

@@ -10,21 +10,12 @@
 
 namespace gearbench::ehl {
 
-void LoadFactors::validate() const {
-  const std::array<std::pair<const char*, double>, 4> all{
-      {{"K_A", K_A}, {"K_v", K_v}, {"K_H_alpha", K_H_alpha}, {"K_H_beta", K_H_beta}}};
-  for (const auto& [key, value] : all)
-    if (!(value >= 1.0 && value <= 10.0))
-      throw InputError(fmt::format("load_factors.{} = {}: allowed range is [1, 10]", key, value));
-}
-
 ThermalMeshPath::ThermalMeshPath(const geometry::GearPairGeometry& geometry, const model::OperatingPoint& operating,
                                  const std::array<model::Material, 2>& materials,
                                  const lubricant::ThermalRheology& rheology, const model::ThermalSolids& solids,
-                                 LoadFactors factors, std::string load_sharing, ThermalEhlOptions options)
+                                 model::LoadFactors factors, std::string load_sharing, ThermalEhlOptions options)
     : geometry_(geometry), operating_(operating), materials_(materials), rheology_(rheology), solids_(solids),
       factors_(factors), load_sharing_(std::move(load_sharing)), options_(std::move(options)) {
-  factors_.validate();
   options_.validate();
   geometry::make_load_sharing(load_sharing_, "load_sharing");  // validates the name
 }

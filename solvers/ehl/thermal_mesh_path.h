@@ -18,12 +18,6 @@
 
 namespace gearbench::ehl {
 
-struct LoadFactors {
-  double K_A = 1.0, K_v = 1.0, K_H_alpha = 1.0, K_H_beta = 1.0;
-  [[nodiscard]] double product() const { return K_A * K_v * K_H_alpha * K_H_beta; }
-  void validate() const;  ///< InputError naming the key
-};
-
 struct ThermalPathPoint {
   std::string name;                 ///< "A", "AB", "B", "C", "D", "DE", "E"
   double position = 0.0;            ///< from T1 along the line of action [m]
@@ -44,7 +38,7 @@ class ThermalMeshPath {
  public:
   ThermalMeshPath(const geometry::GearPairGeometry& geometry, const model::OperatingPoint& operating,
                   const std::array<model::Material, 2>& materials, const lubricant::ThermalRheology& rheology,
-                  const model::ThermalSolids& solids, LoadFactors factors, std::string load_sharing,
+                  const model::ThermalSolids& solids, model::LoadFactors factors, std::string load_sharing,
                   ThermalEhlOptions options);
   /// The contact at each point, without solving (for the ISO comparison and the report).
   [[nodiscard]] std::vector<ThermalPathPoint> contacts() const;
@@ -57,7 +51,7 @@ class ThermalMeshPath {
   std::array<model::Material, 2> materials_;
   const lubricant::ThermalRheology& rheology_;
   model::ThermalSolids solids_;
-  LoadFactors factors_;
+  model::LoadFactors factors_;
   std::string load_sharing_;
   ThermalEhlOptions options_;
 };

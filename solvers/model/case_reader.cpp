@@ -131,6 +131,31 @@ ThermalSolids read_thermal_solids(ObjectReader s) {
   return d;
 }
 
+LoadFactors read_load_factors(ObjectReader f) {
+  LoadFactors k;
+  k.K_A = f.optional_number("K_A", {1.0, 10.0}).value_or(1.0);
+  k.K_v = f.optional_number("K_v", {1.0, 10.0}).value_or(1.0);
+  k.K_H_alpha = f.optional_number("K_H_alpha", {1.0, 10.0}).value_or(1.0);
+  k.K_H_beta = f.optional_number("K_H_beta", {1.0, 10.0}).value_or(1.0);
+  f.finish();
+  return k;
+}
+
+ThermalPathCase read_thermal_path_case(ObjectReader& root) {
+  ThermalPathCase c;
+  c.gear_pair = read_gear_pair(root.object("gear_pair"));
+  if (!root.has("materials")) throw InputError("materials: missing required key");
+  c.materials = read_materials(root);
+  if (!root.has("operating")) throw InputError("operating: missing required key");
+  c.operating = read_operating(root.object("operating"));
+  if (root.has("load_factors")) c.load_factors = read_load_factors(root.object("load_factors"));
+  c.lubricant = read_thermal_lubricant(root.object("lubricant"));
+  c.solids = read_thermal_solids(root.object("solids"));
+  c.inlet_temperature = root.number("inlet_temperature_K", {200.0, 600.0}, "K");
+  c.load_sharing = root.optional_string("load_sharing", {"iso", "equal"}).value_or("iso");
+  return c;
+}
+
 GearCase read_gear_case(ObjectReader& root) {
   GearCase c;
   c.gear_pair = read_gear_pair(root.object("gear_pair"));

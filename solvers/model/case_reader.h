@@ -24,6 +24,25 @@ ThermalLubricant read_thermal_lubricant(ObjectReader section);
 /// "solids": {"thermal_conductivity_W_per_mK": [k1, k2], "specific_heat_J_per_kgK": [c1, c2],
 /// "density_kg_m3": [ρ1, ρ2]}.
 ThermalSolids read_thermal_solids(ObjectReader section);
+/// "load_factors": {"K_A", "K_v", "K_H_alpha", "K_H_beta"}, each in [1, 10], default 1.
+LoadFactors read_load_factors(ObjectReader section);
+
+/// The physical data of a thermal EHL path case (kind "tehl_path").
+struct ThermalPathCase {
+  GearPair gear_pair;
+  std::array<Material, 2> materials;
+  OperatingPoint operating;
+  LoadFactors load_factors;
+  ThermalLubricant lubricant;
+  ThermalSolids solids;
+  double inlet_temperature = 0.0;     ///< T0 [K]
+  std::string load_sharing = "iso";   ///< "iso" (ISO/TR 15144-1 X_Y) or "equal"
+};
+
+/// Reads "gear_pair", "materials", "operating", "load_factors" (optional), "lubricant",
+/// "solids", "inlet_temperature_K" and "load_sharing" (optional) of the root; the kind's
+/// numerical sections are left to the caller.
+ThermalPathCase read_thermal_path_case(ObjectReader& root);
 
 /// The sections shared by every gear-pair case kind. Sections a kind does not need are
 /// still validated when present, so one case file can serve several kinds.

@@ -37,6 +37,13 @@ struct Lubricant {
   std::optional<double> specific_heat;         ///< [J/(kg·K)]
 };
 
+/// Load factors of ISO 6336-1 applied to the nominal tooth force (application, dynamic,
+/// transverse and face load factors).
+struct LoadFactors {
+  double K_A = 1.0, K_v = 1.0, K_H_alpha = 1.0, K_H_beta = 1.0;
+  [[nodiscard]] double product() const { return K_A * K_v * K_H_alpha * K_H_beta; }
+};
+
 /// A lubricant for thermal EHL: temperature-dependent viscosity (Roelands with β, or
 /// Ubbelohde–Walther from ν40 and ν100) and density (ISO/TR 15144-1 law from ρ15).
 struct ThermalLubricant {
