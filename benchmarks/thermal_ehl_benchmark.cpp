@@ -1,0 +1,104 @@
+// Thermal EHL (issue #4): one sliding contact and seed 001's whole path (A, AB, B, C, D, DE,
+// E) with the default grids (641 nodes, 10 across the film, 14 in each solid), each against
+// the isothermal solution of the same contacts as its baseline (the side-by-side ratio is the
+// price of the temperature field). Target: the whole path under 2 s.
+#include <benchmark/benchmark.h>
+
+#include "ehl/thermal_mesh_path.h"
+#include "model/case_reader.h"
+#include "model/json_reader.h"
+
+namespace {
+
+using namespace gearbench;
+
+model::ThermalPathCase seed001() {
+  const auto j = model::read_json_file(std::string(GEARBENCH_SOURCE_DIR) + "/cases/seed001_tehl_path.json");
+  model::ObjectReader root(j, "");
+  return model::read_thermal_path_case(root);
+}
+
+/// The sliding contact of cases/tehl_point_sliding.json (SRR 0.5).
+ehl::LineContactData sliding_contact() {
+  ehl::LineContactData c;
+  c.reduced_radius = 0.02;
+  c.load_per_length = 3e5;
+  c.reduced_modulus = 2.2e11;
+  c.u1 = 2.5;
+  c.u2 = 1.5;
+  return c;
+}
+
+model::ThermalLubricant mineral_oil() {
+  model::ThermalLubricant d;
+  d.density_15C = 870.0;
+  d.pressure_viscosity = 20e-9;
+  d.viscosity = 0.05;
+  d.temperature_viscosity = 0.03;
+  d.thermal_conductivity = 0.14;
+  d.specific_heat = 2000.0;
+  return d;
+}
+
+model::ThermalSolids steel() {
+  model::ThermalSolids s;
+  s.conductivity = {46.0, 46.0};
+  s.specific_heat = {470.0, 470.0};
+  s.density = {7850.0, 7850.0};
+  return s;
+}
+
+void BM_TehlPoint(benchmark::State& state) {
+  const lubricant::ThermalRheology rheology(mineral_oil(), 313.15);
+  ehl::ThermalEhlResult r;
+  for (auto _ : state) {
+    r = ehl::ThermalLineContact(sliding_contact(), rheology, steel(), {}).solve();
+    benchmark::DoNotOptimize(r.h_min);
+  }
+  state.counters["thermal_iterations"] = r.iterations;
+  state.counters["work_units"] = r.work_units;
+}
+BENCHMARK(BM_TehlPoint)->Unit(benchmark::kMillisecond);
+
+void BM_TehlPoint_baseline(benchmark::State& state) {
+  const lubricant::ThermalRheology rheology(mineral_oil(), 313.15);
+  const ehl::ThermalLineContact contact(sliding_contact(), rheology, steel(), {});
+  const ehl::LineContactProblem problem(contact.isothermal_data());
+  ehl::EhlResult r;
+  for (auto _ : state) {
+    r = ehl::LineContactSolver(problem, ehl::EhlOptions{}).solve();
+    benchmark::DoNotOptimize(r.h_min);
+  }
+  state.counters["work_units"] = r.work_units;
+}
+BENCHMARK(BM_TehlPoint_baseline)->Unit(benchmark::kMillisecond);
+
+void BM_TehlPath(benchmark::State& state) {
+  const auto c = seed001();
+  const geometry::GearPairGeometry g(c.gear_pair);
+  const lubricant::ThermalRheology rheology(c.lubricant, c.inlet_temperature);
+  const ehl::ThermalMeshPath path(g, c.operating, c.materials, rheology, c.solids, c.load_factors, c.load_sharing, {});
+  for (auto _ : state) benchmark::DoNotOptimize(path.run().points.size());
+  state.counters["points"] = 7;
+}
+BENCHMARK(BM_TehlPath)->Unit(benchmark::kMillisecond);
+
+/// The same seven contacts, isothermal at the inlet temperature.
+void BM_TehlPath_baseline(benchmark::State& state) {
+  const auto c = seed001();
+  const geometry::GearPairGeometry g(c.gear_pair);
+  const lubricant::ThermalRheology rheology(c.lubricant, c.inlet_temperature);
+  const ehl::ThermalMeshPath path(g, c.operating, c.materials, rheology, c.solids, c.load_factors, c.load_sharing, {});
+  std::vector<ehl::LineContactData> contacts;
+  for (const auto& p : path.contacts())
+    contacts.push_back(ehl::ThermalLineContact(p.contact, rheology, c.solids, {}).isothermal_data());
+  for (auto _ : state)
+    for (const auto& d : contacts) {
+      const ehl::LineContactProblem problem(d);
+      benchmark::DoNotOptimize(ehl::LineContactSolver(problem, ehl::EhlOptions{}).solve().h_min);
+    }
+  state.counters["points"] = 7;
+}
+BENCHMARK(BM_TehlPath_baseline)->Unit(benchmark::kMillisecond);
+
+}  // namespace
