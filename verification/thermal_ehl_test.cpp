@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "ehl/thermal_line_contact.h"
+#include "ehl/traction.h"
 #include "lubricant/rheology.h"
 #include "lubricant/thermal_rheology.h"
 #include "model/errors.h"
@@ -144,6 +145,25 @@ TEST(ThermalLineContact, RejectsBadOptions) {
   o.factor_relaxation = 0.0;
   EXPECT_THROW(ThermalLineContact(contact(2.0, 2.0), rheology, steel(), o), InputError);
   EXPECT_THROW(ThermalLineContact(contact(-1.0, 2.0), rheology, steel(), small_grid()).solve(), InputError);
+}
+
+// Eyring traction from a solved film: τ0 → ∞ gives back the solver's Newtonian traction
+// (the same integrand, asinh(x) = x + O(x³): 1e-9 relative at τ0 = 1e15 Pa); a finite τ0
+// lowers it, the more the smaller τ0 (asinh is concave and odd).
+TEST(EyringTraction, ReducesToNewtonianAndFallsWithTheStress) {
+  auto d = contact(2.5, 1.5);
+  d.viscosity = 0.05;
+  d.pressure_viscosity = 20e-9;
+  const LineContactProblem problem(d);
+  EhlOptions o;
+  o.levels = 3;
+  const auto r = LineContactSolver(problem, o).solve();
+  EXPECT_NEAR(eyring_traction(problem, r, 1e15).coefficient / r.friction_coefficient, 1.0, 1e-9);
+  const double mu10 = std::abs(eyring_traction(problem, r, 10e6).coefficient);
+  const double mu5 = std::abs(eyring_traction(problem, r, 5e6).coefficient);
+  EXPECT_LT(mu5, mu10);
+  EXPECT_LT(mu10, std::abs(r.friction_coefficient));
+  EXPECT_GT(mu5, 0.0);
 }
 
 }  // namespace

@@ -26,6 +26,8 @@ efficiency::MeshLossOptions read_mesh_loss_options(model::ObjectReader& root) {
         f.optional_number("mu_boundary", model::Range::closed(0.07, 0.15)).value_or(options.boundary_friction);
     options.lubricant_factor =
         f.optional_number("lubricant_factor", model::Range::closed(0.1, 2.0)).value_or(options.lubricant_factor);
+    if (auto tau = f.optional_number("eyring_stress_MPa", model::Range::positive(1e3), "MPa"))
+      options.eyring_stress = *tau * 1e6;
     f.finish();
   }
   options.load_sharing = root.optional_string("load_sharing", {"equal", "iso", "stiffness"}).value_or("equal");

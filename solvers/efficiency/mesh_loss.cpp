@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <numeric>
 
+#include "ehl_friction.h"
 #include "film_thickness.h"
 #include "model/errors.h"
 #include "stiffness/pair_stiffness.h"
@@ -37,12 +38,11 @@ void MeshLossOptions::validate() const {
     throw InputError(fmt::format("friction.lubricant_factor = {}: allowed range is (0, 2]", lubricant_factor));
   if (!(rolling_loss_constant >= 0.0 && rolling_loss_constant <= 1e11))
     throw InputError(fmt::format("rolling_loss_constant = {}: allowed range is [0, 1e11] Pa", rolling_loss_constant));
-  if (friction_model == FrictionModel::ehl)
-    // The line-contact solver's traction is Newtonian: at the seed 004 contact (1.27 GPa,
-    // Roelands) it gives |μ| ~ 3e4. It needs a limiting-shear (Eyring) model first.
-    throw InputError("friction.model = \"ehl\": the EHL solver's traction is Newtonian (no limiting shear) "
-                     "and not usable as a friction law yet; allowed here are \"constant\", "
-                     "\"xu_kahraman\", \"benedict_kelley\", \"iso14179\", \"mixed\"");
+  if (friction_model == FrictionModel::ehl && !(eyring_stress > 0.0 && eyring_stress <= 1e9))
+    throw InputError(fmt::format("friction.eyring_stress_MPa = {}: required by friction.model = \"ehl\", allowed "
+                                 "range (0, 1000]", eyring_stress * 1e-6));
+  if (friction_model != FrictionModel::ehl && eyring_stress != 0.0)
+    throw InputError("friction.eyring_stress_MPa: applies to friction.model = \"ehl\" only");
 }
 
 namespace {
@@ -75,7 +75,8 @@ MeshLoss::MeshLoss(const geometry::GearPairGeometry& geometry, const model::Oper
                                  "contact-line length; allowed is \"equal\"", options_.load_sharing));
   const auto model_name = "friction.model = " + lubricant::friction_model_name(options_.friction_model);
   if (options_.friction_model != FrictionModel::constant) require_media(media_.lubricant.has_value(), "lubricant", model_name);
-  if (options_.friction_model == FrictionModel::xu_kahraman || options_.friction_model == FrictionModel::mixed)
+  if (options_.friction_model == FrictionModel::xu_kahraman || options_.friction_model == FrictionModel::mixed ||
+      options_.friction_model == FrictionModel::ehl)
     require_media(media_.materials.has_value(), "materials", model_name + " (Hertz pressure, film)");
   if (options_.load_sharing == "stiffness") {
     require_media(media_.materials.has_value(), "materials", "load_sharing = stiffness");
@@ -89,7 +90,12 @@ MeshLoss::MeshLoss(const geometry::GearPairGeometry& geometry, const model::Oper
   if (media_.materials) reduced_modulus_ = model::reduced_modulus(*media_.materials);
   cos_alpha_wt_ = std::cos(geometry_.working_pressure_angle());
   if (options_.friction_model == FrictionModel::iso14179) iso_mu_ = iso14179_coefficient();
+  if (options_.friction_model == FrictionModel::ehl)
+    ehl_friction_ = std::make_unique<EhlFriction>(ehl::LineContactData::from_gear_media(*media_.materials, *media_.lubricant),
+                                                  options_.eyring_stress);
 }
+
+int MeshLoss::ehl_solves() const { return ehl_friction_ ? ehl_friction_->solves() : 0; }
 
 MeshLoss::~MeshLoss() = default;
 
@@ -122,7 +128,7 @@ double MeshLoss::friction(const lubricant::ContactState& c) const {
       return lubricant::mixed_friction(share, lubricant::xu_kahraman(lubricant::XuKahramanInputs::from_si(c)),
                                        options_.boundary_friction);
     }
-    case FrictionModel::ehl: break;  // rejected by validate()
+    case FrictionModel::ehl: return ehl_friction_->coefficient(c);
   }
   return options_.friction_coefficient;
 }
