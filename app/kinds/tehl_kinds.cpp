@@ -1,6 +1,7 @@
 // Case kinds "tehl_point" (one dimensional thermal line contact) and "tehl_path" (thermal
 // EHL at A, AB, B, C, D, DE, E of a gear pair's path of contact, seed 001).
 #include <algorithm>
+#include <iostream>
 #include <fmt/format.h>
 
 #include "ehl/thermal_mesh_path.h"
@@ -60,7 +61,7 @@ json run_tehl_path(const json& case_json) {
   const lubricant::ThermalRheology rheology(c.lubricant, c.inlet_temperature);
   const ehl::ThermalMeshPath path(geometry, c.operating, c.materials, rheology, c.solids, c.load_factors,
                                   c.load_sharing, options);
-  const auto result = path.run();
+  const auto result = path.run([](const std::string& line) { std::cerr << "gearbench: " << line << std::endl; });
   json points = json::array();
   for (const auto& pt : result.points) {
     json p = thermal_result_json(pt.result, pt.name == "A" || pt.name == "C");

@@ -52,7 +52,7 @@ std::vector<ThermalPathPoint> ThermalMeshPath::contacts() const {
   return points;
 }
 
-ThermalPathResult ThermalMeshPath::run() const {
+ThermalPathResult ThermalMeshPath::run(const std::function<void(const std::string&)>& progress) const {
   const auto start = std::chrono::steady_clock::now();
   ThermalPathResult out;
   out.points = contacts();
@@ -70,6 +70,11 @@ ThermalPathResult ThermalMeshPath::run() const {
     }
     if (!pt.result.converged)
       throw ConvergenceError(fmt::format("thermal EHL at {} did not converge: {}", where, pt.result.summary()));
+    if (progress)
+      progress(fmt::format("thermal EHL point {} ({}/{}): h_min {:.4f} µm, film temperature rise {:.2f} K, {} "
+                           "iterations, {:.2f} s", pt.name, &pt - out.points.data() + 1, out.points.size(),
+                           pt.result.h_min * 1e6, pt.result.temperature_rise_max, pt.result.iterations,
+                           pt.result.seconds));
   }
   for (std::size_t i = 1; i < out.points.size(); ++i)
     if (out.points[i].result.h_min < out.points[static_cast<std::size_t>(out.minimum_film_point)].result.h_min)

@@ -9,6 +9,7 @@
 // radius is the normal-section R/cos β_b; the speeds are the transverse surface speeds along
 // the profile (as ISO/TR 15144-1 and DIN 3990 use them).
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -42,8 +43,9 @@ class ThermalMeshPath {
                   ThermalEhlOptions options);
   /// The contact at each point, without solving (for the ISO comparison and the report).
   [[nodiscard]] std::vector<ThermalPathPoint> contacts() const;
-  /// Solves every point; throws ConvergenceError naming the point that failed.
-  [[nodiscard]] ThermalPathResult run() const;
+  /// Solves every point; throws ConvergenceError naming the point that failed. `progress`
+  /// gets one line per solved point.
+  [[nodiscard]] ThermalPathResult run(const std::function<void(const std::string&)>& progress = {}) const;
 
  private:
   const geometry::GearPairGeometry& geometry_;
