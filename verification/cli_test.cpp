@@ -546,3 +546,54 @@ TEST(Cli, BenchRecordsContextAndRatio) {
 }
 
 }  // namespace
+
+// Thermal EHL: a point contact and the seed 001 path run on small grids (161 nodes); bad
+// input exits 2 naming the key; an iteration cap that is too small exits 3 with the
+// diagnostics in -o.
+TEST(Cli, ThermalEhlRunsAndValidates) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/tehl_point_sliding.json");
+  auto point = json::parse(in);
+  point["grid"] = {{"levels", 3}};
+  const auto o = run_gearbench("run " + write_case("tehl_point_small", point.dump()));
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  EXPECT_LT(r["h_min_m"].get<double>(), r["isothermal"]["h_min_m"].get<double>());
+  EXPECT_GT(r["temperature_rise_max_K"].get<double>(), 10.0);
+  EXPECT_TRUE(r.contains("friction_coefficient_eyring"));
+  EXPECT_EQ(r["temperature_field"]["film_K"].size(), r["profile"]["x_m"].size());
+
+  const std::pair<std::string, std::string> bad[] = {
+      {R"("lubricant": {"nu40_mm2_s": 320})", "give either viscosity_Pa_s"},
+      {R"("inlet_temperature_K": 100)", "inlet_temperature_K = 100: allowed range is [200, 600]"},
+      {R"("solids": {"density_kg_m3": [7850]})", "solids.density_kg_m3"},
+      {R"("thermal": {"heat_sources": "radiation"})", "thermal.heat_sources"},
+      {R"("thermal": {"film_nodes": 2})", "thermal.film_nodes = 2"},
+  };
+  int n = 0;
+  for (const auto& [patch, expected] : bad) {
+    auto j = point;
+    j.merge_patch(json::parse("{" + patch + "}"));
+    const auto b = run_gearbench("run " + write_case("tehl_bad_" + std::to_string(n++), j.dump()));
+    EXPECT_EQ(b.exit_code, 2) << patch << "\n" << b.err;
+    EXPECT_NE(b.err.find(expected), std::string::npos) << b.err;
+  }
+
+  auto capped = point;
+  capped["thermal"] = {{"max_iterations", 1}};
+  const auto out = temp_path("tehl_unconverged.json").string();
+  const auto failed = run_gearbench("run " + write_case("tehl_capped", capped.dump()) + " -o " + out);
+  EXPECT_EQ(failed.exit_code, 3) << failed.err;
+  std::ifstream diag(out);
+  EXPECT_FALSE(json::parse(diag)["diagnostics"]["converged"].get<bool>());
+  fs::remove(out);
+
+  std::ifstream path_in(GEARBENCH_SOURCE_DIR "/cases/seed001_tehl_path.json");
+  auto path = json::parse(path_in);
+  path["grid"] = {{"levels", 3}};
+  const auto p = run_gearbench("run " + write_case("tehl_path_small", path.dump()));
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  const auto rp = json::parse(p.out);
+  EXPECT_EQ(rp["points"].size(), 7u);
+  EXPECT_EQ(rp["minimum_film_point"], "A");
+  EXPECT_NE(p.err.find("thermal EHL point E (7/7)"), std::string::npos) << p.err;
+}
