@@ -140,6 +140,13 @@ TEST(ExtremeInput, HerringboneDynamics) {
   walk("herringbone12", c, true);
 }
 
+TEST(ExtremeInput, ThermalEhlPoint) {
+  auto c = load("tehl_point_sliding.json");
+  c["grid"] = {{"levels", 2}};
+  c["thermal"] = {{"max_iterations", 6}, {"film_nodes", 5}, {"solid_nodes", 4}};
+  walk("tehl_point", c, true);
+}
+
 TEST(ExtremeInput, Efficiency) {
   auto c = load("seed004_spur_efficiency.json");
   c["positions"] = 20;
