@@ -277,7 +277,10 @@ double FilmTemperature::sweep(const std::vector<double>& p, const std::vector<do
     const ColumnFlow flow = column_flow(0, p[0], dpdx_at(p, 0, dx_), h[0]);
     Q_[0] = mass_flux_profile(flow, h[0]);
   }
+  // Symmetric sweep: downstream, where the oil and the solids carry the heat, then upstream,
+  // which carries the reverse flow of the inlet back in one pass instead of one column per sweep.
   for (std::size_t i = 1; i < x_.size(); ++i) solve_column(i, p, h);
+  for (std::size_t i = x_.size() - 1; i >= 1; --i) solve_column(i, p, h);
   for (std::size_t i = 0; i < x_.size(); ++i)
     for (std::size_t j = 0; j < zeta_.size(); ++j) {
       if (!std::isfinite(T_[i][j]))

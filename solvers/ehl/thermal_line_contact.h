@@ -29,7 +29,7 @@ struct ThermalEhlOptions {
   EhlOptions grid;                     ///< the isothermal machinery (levels, cycles, tolerance)
   FilmTemperatureOptions film;         ///< nodes across the film and into the solids, switches
   int max_iterations = 60;             ///< pressure–temperature iterations (cap: an error beyond)
-  int sweeps_per_iteration = 8;        ///< temperature sweeps between pressure solves
+  int sweeps_per_iteration = 8;        ///< temperature sweeps (down- and upstream) between pressure solves
   int cycles_per_iteration = 4;        ///< multigrid cycles per pressure solve (the last one
                                        ///< must also meet the multigrid tolerance)
   /// Largest temperature change between iterations, relative to the film's largest rise

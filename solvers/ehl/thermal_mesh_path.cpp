@@ -1,5 +1,6 @@
 #include "thermal_mesh_path.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
@@ -52,24 +53,37 @@ std::vector<ThermalPathPoint> ThermalMeshPath::contacts() const {
   return points;
 }
 
+void ThermalMeshPath::solve(ThermalPathPoint& pt) const {
+  const ThermalLineContact contact(pt.contact, rheology_, solids_, options_);
+  const auto& d = contact.isothermal_data();
+  const std::string where = fmt::format(
+      "point {} of the path (R {:.4g} m, w {:.4g} N/m, u [{:.4g}, {:.4g}] m/s, p_H {:.4g} GPa, Moes M {:.4g}, "
+      "L {:.4g})", pt.name, d.reduced_radius, d.load_per_length, d.u1, d.u2, pt.hertz_pressure * 1e-9,
+      d.moes_M(), d.moes_L());
+  try {
+    pt.result = contact.try_solve();
+  } catch (const ConvergenceError& e) {
+    throw ConvergenceError(fmt::format("{}: {}", where, e.what()), e.diagnostics);
+  }
+  if (!pt.result.converged)
+    throw ConvergenceError(fmt::format("thermal EHL at {} did not converge: {}", where, pt.result.summary()));
+}
+
+ThermalPathPoint ThermalMeshPath::solve_point(const std::string& name) const {
+  auto points = contacts();
+  const auto it = std::find_if(points.begin(), points.end(), [&](const auto& p) { return p.name == name; });
+  if (it == points.end())
+    throw InputError(fmt::format("point \"{}\": allowed are A, AB, B, C, D, DE, E", name));
+  solve(*it);
+  return std::move(*it);
+}
+
 ThermalPathResult ThermalMeshPath::run(const std::function<void(const std::string&)>& progress) const {
   const auto start = std::chrono::steady_clock::now();
   ThermalPathResult out;
   out.points = contacts();
   for (auto& pt : out.points) {
-    const ThermalLineContact contact(pt.contact, rheology_, solids_, options_);
-    const auto& d = contact.isothermal_data();
-    const std::string where = fmt::format(
-        "point {} of the path (R {:.4g} m, w {:.4g} N/m, u [{:.4g}, {:.4g}] m/s, p_H {:.4g} GPa, Moes M {:.4g}, "
-        "L {:.4g})", pt.name, d.reduced_radius, d.load_per_length, d.u1, d.u2, pt.hertz_pressure * 1e-9,
-        d.moes_M(), d.moes_L());
-    try {
-      pt.result = contact.try_solve();
-    } catch (const ConvergenceError& e) {
-      throw ConvergenceError(fmt::format("{}: {}", where, e.what()), e.diagnostics);
-    }
-    if (!pt.result.converged)
-      throw ConvergenceError(fmt::format("thermal EHL at {} did not converge: {}", where, pt.result.summary()));
+    solve(pt);
     if (progress)
       progress(fmt::format("thermal EHL point {} ({}/{}): h_min {:.4f} µm, film temperature rise {:.2f} K, {} "
                            "iterations, {:.2f} s", pt.name, &pt - out.points.data() + 1, out.points.size(),

@@ -43,6 +43,8 @@ class ThermalMeshPath {
                   ThermalEhlOptions options);
   /// The contact at each point, without solving (for the ISO comparison and the report).
   [[nodiscard]] std::vector<ThermalPathPoint> contacts() const;
+  /// Solves one named point ("A", …, "E"); InputError for an unknown name.
+  [[nodiscard]] ThermalPathPoint solve_point(const std::string& name) const;
   /// Solves every point; throws ConvergenceError naming the point that failed. `progress`
   /// gets one line per solved point.
   [[nodiscard]] ThermalPathResult run(const std::function<void(const std::string&)>& progress = {}) const;
@@ -56,6 +58,8 @@ class ThermalMeshPath {
   model::LoadFactors factors_;
   std::string load_sharing_;
   ThermalEhlOptions options_;
+
+  void solve(ThermalPathPoint& pt) const;
 };
 
 }  // namespace gearbench::ehl
