@@ -194,30 +194,37 @@ void add_figures(const CheckContext& ctx, reports::Report& report) {
                             "along the datum line from the tooth centre [m_n]", "height above the datum line [m_n]",
                             profiles});
 
-  const auto r = compare(ctx);
   const geometry::GearPairGeometry g(c.gear_pair);
-  const DoubleInvolutePair stepped(g, rack);
-  std::vector<double> t, l_di, l_inv, lg2, ld2, k_di, k_inv, k2_di;
+  const DoubleInvolutePair stepped(g, rack), ordinary(g, {});
+  std::vector<double> tg, l_di, l_inv, lg2, ld2;  // the geometry on a fine grid (no EHL)
+  for (int i = 0; i <= 200; ++i) {
+    const double tau = i / 200.0 * g.base_pitch_transverse();
+    tg.push_back(i / 200.0);
+    l_di.push_back(stepped.contact_line_length(tau) * 1e3);
+    l_inv.push_back(ordinary.contact_line_length(tau) * 1e3);
+    lg2.push_back(stepped.pair_contact_length(2, ToothZone::root, tau) * 1e3);
+    ld2.push_back(stepped.pair_contact_length(2, ToothZone::tip, tau) * 1e3);
+  }
+  report.figures.push_back({"double_involute_contact_lines", section, "Contact-line lengths over one mesh period",
+                            "t / mesh period", "length [mm]",
+                            {{"L(t), double involute", tg, l_di}, {"L(t), ordinary involute", tg, l_inv},
+                             {"L_G2(t), 2nd pair root zone", tg, lg2}, {"L_D2(t), 2nd pair tip zone", tg, ld2}}});
+
+  const auto r = compare(ctx);
+  std::vector<double> t, k_di, k_inv, k2_di, k2_inv;
   for (std::size_t i = 0; i < r.stepped.instants.size(); ++i) {
     const auto& a = r.stepped.instants[i];
     const auto& b = r.ordinary.instants[i];
     t.push_back(a.time / r.stepped.period);
-    l_di.push_back(a.contact_length * 1e3);
-    l_inv.push_back(b.contact_length * 1e3);
-    lg2.push_back(a.pair2_root_length * 1e3);
-    ld2.push_back(a.pair2_tip_length * 1e3);
     k_di.push_back(a.film_stiffness * 1e-6);
     k_inv.push_back(b.film_stiffness * 1e-6);
     k2_di.push_back(a.pair2_film_stiffness * 1e-6);
+    k2_inv.push_back(b.pair2_film_stiffness * 1e-6);
   }
-  report.figures.push_back({"double_involute_contact_lines", section, "Contact-line lengths over one mesh period",
-                            "t / mesh period", "length [mm]",
-                            {{"L(t), double involute", t, l_di}, {"L(t), ordinary involute", t, l_inv},
-                             {"L_G2(t), 2nd pair root zone", t, lg2}, {"L_D2(t), 2nd pair tip zone", t, ld2}}});
   report.figures.push_back({"double_involute_oil_film", section, "Oil-film stiffness over one mesh period",
                             "t / mesh period", "film stiffness [N/µm]",
                             {{"double involute, all pairs", t, k_di}, {"ordinary involute, all pairs", t, k_inv},
-                             {"double involute, 2nd pair", t, k2_di}}});
+                             {"double involute, 2nd pair", t, k2_di}, {"ordinary involute, 2nd pair", t, k2_inv}}});
   report.notes.push_back({section, fmt::format(
       "Case {} (gearbench's choice: the seed's fragment gives no gear data). The step δ = {:.3f} mm on the line of "
       "action, zones {:.2f} + {:.2f} base pitches, waist radius ρ_g* = {:.3f}. Over the mesh period the "
