@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
+#include <string>
 
 #include "involute.h"
 #include "model/errors.h"
@@ -27,8 +28,6 @@ double root_line_end_depth(const model::GearPair& pair) {
 }
 
 }  // namespace
-
-std::string to_string(ToothZone z) { return z == ToothZone::root ? "root" : "tip"; }
 
 double waist_radius(const model::DoubleInvoluteRack& rack, double pressure_angle) {
   const double delta = normal_step(rack, pressure_angle);
