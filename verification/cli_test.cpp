@@ -328,6 +328,43 @@ TEST(Cli, OilFilmStiffnessRunsAndValidates) {
   }
 }
 
+// The double-involute form of the kind on a coarse grid (two instants, one Gauss point per
+// piece): both tooth forms come back with a positive film stiffness at every instant, the
+// zones leave the gap at the pitch point, and rack mistakes name their key.
+TEST(Cli, OilFilmStiffnessDoubleInvoluteRunsAndValidates) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed002_double_involute_oil_film.json");
+  auto small = json::parse(in);
+  small["mesh_samples"] = 2;
+  small["points_per_piece"] = 1;
+  small["grid"] = {{"levels", 3}};
+  const auto o = run_gearbench("run " + write_case("double_involute_small", small.dump()));
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  for (const char* form : {"double_involute", "involute"}) {
+    const auto& k = r[form]["instants"]["film_stiffness_N_per_m"];
+    ASSERT_EQ(k.size(), 2u) << form;
+    for (const auto& v : k) EXPECT_GT(v.get<double>(), 0.0) << form;
+  }
+  EXPECT_GT(r["mean_film_stiffness_ratio"].get<double>(), 0.0);
+  EXPECT_LT(r["geometry"]["root_zone_m"][1].get<double>(), r["geometry"]["tip_zone_m"][0].get<double>());
+  const std::pair<std::string, std::string> bad[] = {
+      {R"("double_involute": {"waist_root_depth": 0.1})", "double_involute.waist_root_depth = 0.1: allowed range is"},
+      {R"("double_involute": {"root_tangential_shift": 0.3})", "double_involute.root_tangential_shift = 0.3"},
+      {R"("tooth_form": "involute")", "double_involute: the rack section is read only with tooth_form"},
+      {R"("tooth_form": "stepped")", "tooth_form"},
+      {R"("mesh_samples": 0)", "mesh_samples = 0: allowed range is [1, 10000]"},
+      {R"("gear_pair": {"helix_angle_deg": 0})", "no tooth pair is in contact"},
+  };
+  int n = 0;
+  for (const auto& [patch, expected] : bad) {
+    auto j = small;
+    j.merge_patch(json::parse("{" + patch + "}"));
+    const auto b = run_gearbench("run " + write_case("double_involute_bad_" + std::to_string(n++), j.dump()));
+    EXPECT_EQ(b.exit_code, 2) << patch << "\n" << b.err;
+    EXPECT_NE(b.err.find(expected), std::string::npos) << b.err;
+  }
+}
+
 /// Starts gearbench with `args`, sends SIGINT after `delay`, and returns its exit status.
 int interrupt_gearbench(const std::vector<std::string>& args, std::chrono::milliseconds delay) {
   const pid_t pid = ::fork();

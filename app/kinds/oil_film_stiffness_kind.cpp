@@ -1,5 +1,8 @@
 // Case kind "oil_film_stiffness": the EHL film's stiffness along the path of contact of a
-// spur pair, in series with the energy-method pair stiffness (seed 002, ordinary involute).
+// spur pair, in series with the energy-method pair stiffness (seed 002, ordinary involute);
+// with "tooth_form": "double_involute", the film stiffness over one mesh period of the
+// stepped double-involute pair of the "double_involute" rack section and, side by side, of
+// the ordinary involute pair with the same data (seed 002's comparison).
 #include <fmt/format.h>
 
 #include "ehl/oil_film_stiffness.h"
@@ -41,12 +44,94 @@ json points_json(const ehl::OilFilmStiffnessResult& r) {
   return p;
 }
 
+json instants_json(const ehl::MeshPeriodOilFilmResult& r) {
+  json p = {{"time_s", json::array()}, {"contact_line_length_m", json::array()},
+            {"load_per_length_N_per_m", json::array()}, {"film_stiffness_N_per_m", json::array()},
+            {"pair2_root_length_m", json::array()}, {"pair2_tip_length_m", json::array()},
+            {"pair2_film_stiffness_N_per_m", json::array()}, {"pair2_root_radius_m", json::array()},
+            {"pair2_tip_radius_m", json::array()}, {"h_central_min_m", json::array()}, {"pairs", json::array()}};
+  for (const auto& m : r.instants) {
+    p["time_s"].push_back(m.time);
+    p["contact_line_length_m"].push_back(m.contact_length);
+    p["load_per_length_N_per_m"].push_back(m.load_per_length);
+    p["film_stiffness_N_per_m"].push_back(finite_or_null(m.film_stiffness));
+    p["pair2_root_length_m"].push_back(m.pair2_root_length);
+    p["pair2_tip_length_m"].push_back(m.pair2_tip_length);
+    p["pair2_film_stiffness_N_per_m"].push_back(finite_or_null(m.pair2_film_stiffness));
+    p["pair2_root_radius_m"].push_back(m.pair2_root_radius);
+    p["pair2_tip_radius_m"].push_back(m.pair2_tip_radius);
+    p["h_central_min_m"].push_back(finite_or_null(m.h_central_min));
+    p["pairs"].push_back(m.pairs);
+  }
+  return {{"instants", p}, {"mean_film_stiffness_N_per_m", finite_or_null(r.mean_film_stiffness)},
+          {"ehl_solves", r.solves}, {"seconds", r.seconds}};
+}
+
+json geometry_json(const geometry::DoubleInvolutePair& pair) {
+  using geometry::ToothZone;
+  const auto profile = geometry::rack_profile(pair.rack(), pair.geometry().pair());
+  return {{"waist_radius_coef", profile.waist_radius},
+          {"step_on_line_of_action_m", pair.step()},
+          {"root_zone_m", {pair.zone(ToothZone::root).begin, pair.zone(ToothZone::root).end}},
+          {"tip_zone_m", {pair.zone(ToothZone::tip).begin, pair.zone(ToothZone::tip).end}},
+          {"root_zone_contact_ratio", pair.zone_contact_ratio(ToothZone::root)},
+          {"tip_zone_contact_ratio", pair.zone_contact_ratio(ToothZone::tip)},
+          {"rack_points_coef", {{"E", {profile.E.x, profile.E.y}}, {"D", {profile.D.x, profile.D.y}},
+                                {"C", {profile.C.x, profile.C.y}}, {"B", {profile.B.x, profile.B.y}},
+                                {"A", {profile.A.x, profile.A.y}}}}};
+}
+
+model::DoubleInvoluteRack read_rack(model::ObjectReader& root) {
+  auto section = root.object("double_involute");
+  model::DoubleInvoluteRack rack;
+  rack.tip_tangential_shift = section.number("tip_tangential_shift", model::Range::closed(0.0, 0.5));
+  rack.root_tangential_shift = section.number("root_tangential_shift", model::Range::closed(0.0, 0.5));
+  rack.waist_tip_depth = section.number("waist_tip_depth", model::Range::closed(0.0, 2.0));
+  rack.waist_root_depth = section.number("waist_root_depth", model::Range::closed(0.0, 2.0));
+  section.finish();
+  return rack;
+}
+
+json run_double_involute(model::ObjectReader& root, const model::GearCase& gear_case, const ehl::LineContactData& fluid) {
+  const auto rack = read_rack(root);
+  ehl::MeshPeriodOilFilmOptions options;
+  options.samples = root.optional_integer("mesh_samples", 1, 10000).value_or(options.samples);
+  options.points_per_piece = root.optional_integer("points_per_piece", 1, 20).value_or(options.points_per_piece);
+  options.perturbation =
+      root.optional_number("perturbation", {0.0, 0.2, true, false}).value_or(options.perturbation);
+  options.grid = read_ehl_grid(root, options.grid);
+  root.finish();
+
+  const geometry::GearPairGeometry geometry(gear_case.gear_pair);
+  const geometry::DoubleInvolutePair stepped(geometry, rack), ordinary(geometry, {});
+  const auto rs = ehl::MeshPeriodOilFilm(stepped, *gear_case.operating, fluid, options).solve();
+  const auto ro = ehl::MeshPeriodOilFilm(ordinary, *gear_case.operating, fluid, options).solve();
+  return {{"kind", "oil_film_stiffness"},
+          {"tooth_form", "double_involute"},
+          {"perturbation", options.perturbation},
+          {"mesh_period_s", rs.period},
+          {"geometry", geometry_json(stepped)},
+          {"double_involute", instants_json(rs)},
+          {"involute", instants_json(ro)},
+          {"mean_film_stiffness_ratio", finite_or_null(rs.mean_film_stiffness / ro.mean_film_stiffness)},
+          {"notes", json::array({"w = F_bn/L(t): the normal force spread uniformly over the contact lines",
+                                 "k_oil = −Δw/Δh_c by a central difference at loads w(1 ± perturbation); a pair's film "
+                                 "stiffness is ∫k_oil dl along its contact line",
+                                 "involute: the ordinary pair with the same gear data (a zero step)"})},
+          {"diagnostics", {{"seconds", rs.seconds + ro.seconds}, {"ehl_solves", rs.solves + ro.solves}}}};
+}
+
 json run_oil_film_stiffness(const json& case_json) {
   model::ObjectReader root(case_json, "");
   root.string("kind");
   root.optional_string("description");
+  const auto form = root.optional_string("tooth_form", {"involute", "double_involute"}).value_or("involute");
   const auto gear_case = model::read_gear_case(root);
   const auto fluid = read_gear_fluid(root, gear_case, "oil_film_stiffness");
+  if (form == "double_involute") return run_double_involute(root, gear_case, fluid);
+  if (root.has("double_involute"))
+    throw InputError("double_involute: the rack section is read only with tooth_form \"double_involute\" "
+                     "(tooth_form is \"involute\")");
   ehl::OilFilmStiffnessOptions options;
   options.positions = root.optional_integer("positions", 1, 10000).value_or(options.positions);
   options.perturbation =

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/double_involute.h"
 #include "geometry/gear_pair_geometry.h"
 #include "line_contact_solver.h"
 #include "model/materials.h"
@@ -70,6 +71,69 @@ class OilFilmStiffness {
   model::OperatingPoint operating_;
   LineContactData fluid_;
   OilFilmStiffnessOptions options_;
+};
+
+/// Oil-film stiffness over one mesh period of a double-involute pair (seed 002), or of the
+/// ordinary involute pair with the same data (a DoubleInvolutePair with a zero step). At each
+/// instant the normal force F_bn = T1/(r_b1·cos β_b) spreads uniformly over the total contact-
+/// line length L(t), w = F_bn/L(t) (spur: equal sharing between the pairs in contact); every
+/// contact point carries the EHL line contact of its position (normal-section reduced
+/// radius, surface speeds) under w, and its film stiffness per length k_oil = −Δw/Δh_c is the
+/// central difference of two solves at w(1 ± δ). A pair's film stiffness is ∫ k_oil dl along its
+/// contact line (spur: b·k_oil; helical: Gauss–Legendre along each piece, dl = ds/sin β_b),
+/// the mesh's the sum over the pairs (films of different pairs act in parallel).
+struct MeshPeriodOilFilmOptions {
+  int samples = 12;             ///< instants: centres of equal steps of one mesh period
+  int points_per_piece = 3;     ///< Gauss–Legendre points along a helical contact-line piece
+  double perturbation = 0.02;   ///< δ: loads w(1 ± δ)
+  EhlOptions grid = OilFilmStiffnessOptions::default_grid();
+  void validate() const;        ///< InputError naming the key
+};
+
+struct MeshInstant {
+  double time = 0.0;                  ///< from the start of the period [s]
+  double travel = 0.0;                ///< τ = ω1·r_b1·t [m]
+  double contact_length = 0.0;        ///< L(t), all pairs [m]
+  double load_per_length = 0.0;       ///< w = F_bn/L(t) [N/m]
+  double film_stiffness = 0.0;        ///< all pairs [N/m]
+  double pair2_root_length = 0.0;     ///< L_G2(t) [m]
+  double pair2_tip_length = 0.0;      ///< L_D2(t) [m]
+  double pair2_film_stiffness = 0.0;  ///< the seed's second pair [N/m]
+  /// Normal-section reduced radius at the middle of the second pair's piece in each zone
+  /// (the seed's "equivalent radius"; 0 where the pair has no piece in the zone) [m].
+  double pair2_root_radius = 0.0, pair2_tip_radius = 0.0;
+  double h_central_min = 0.0;         ///< thinnest central film of the instant (mean of the ± solves) [m]
+  int pairs = 0;                      ///< pairs in contact
+};
+
+struct MeshPeriodOilFilmResult {
+  std::vector<MeshInstant> instants;
+  double period = 0.0;                ///< [s]
+  double mean_film_stiffness = 0.0;   ///< over the instants [N/m]
+  int solves = 0;
+  double seconds = 0.0;
+  [[nodiscard]] std::string summary() const;
+};
+
+class MeshPeriodOilFilm {
+ public:
+  /// `fluid` supplies η0, α (or z), the rheology models and E′.
+  MeshPeriodOilFilm(const geometry::DoubleInvolutePair& pair, const model::OperatingPoint& operating,
+                    const LineContactData& fluid, MeshPeriodOilFilmOptions options);
+  /// Throws ConvergenceError naming the position whose EHL solve did not converge.
+  [[nodiscard]] MeshPeriodOilFilmResult solve() const;
+
+ private:
+  struct FilmPoint {
+    double stiffness_per_length = 0.0;  ///< [N/m²]
+    double h_central = 0.0;             ///< [m]
+  };
+  [[nodiscard]] FilmPoint film_at(double s, double load_per_length) const;
+
+  const geometry::DoubleInvolutePair& pair_;
+  model::OperatingPoint operating_;
+  LineContactData fluid_;
+  MeshPeriodOilFilmOptions options_;
 };
 
 }  // namespace gearbench::ehl

@@ -118,7 +118,7 @@ void add_figures(const CheckContext& ctx, reports::Report& report) {
       "The film is a stiff spring: b·k_oil = {:.0f}–{:.0f} N/µm along the path against {:.0f}–{:.0f} N/µm "
       "for the pair, so it takes {:.2f}–{:.2f} % of the compliance (most where the pair carries half the "
       "load). {} positions, loads perturbed by ±{:.0f} %, {:.1f} s. The double-involute pair of seed 002 "
-      "(issue 10) is not modelled yet.",
+      "has its own section.",
       std::min_element(k_oil.begin(), k_oil.end())[0] * 1e3, std::max_element(k_oil.begin(), k_oil.end())[0] * 1e3,
       std::min_element(k_pair.begin(), k_pair.end())[0] * 1e3, std::max_element(k_pair.begin(), k_pair.end())[0] * 1e3,
       *std::min_element(share.begin(), share.end()), *std::max_element(share.begin(), share.end()), r.points.size(),
