@@ -71,7 +71,9 @@ const RegisterCheck film_jump_at_C(CheckSpec{
 
 // The paper's test-gear pressure at A came from method A (a loaded-contact analysis, with
 // Kissling's data); method B's load sharing of an unmodified spur pair (X_A = 1/3) at the
-// paper's 265.1 N·m gives less. Recorded, not tuned.
+// paper's 265.1 N·m (FZG load stage 10, 0.35 m arm) gives 12 % less: 1293.7 MPa with the
+// case's E = 200 GPa, 1313 MPa with 206 GPa; the paper's value needs X_A ≈ 0.42. Recorded,
+// not tuned.
 const RegisterCheck test_pressure_A(CheckSpec{
     .id = "seed001.iso15144.reference_test_p_H_A", .section = section, .solver = solver,
     .reference = "seed 001 (FZG C-GF, SKS 10: p_H at A = 1476.2 MPa, 265.1 N·m)",
