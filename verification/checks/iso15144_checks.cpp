@@ -11,6 +11,7 @@
 #include "check_registry.h"
 #include "closed_form/ehl_closed_form.h"
 #include "closed_form/iso15144_micropitting.h"
+#include "geometry/gear_pair_geometry.h"
 #include "iso15144_section.h"
 #include "model/json_reader.h"
 
@@ -110,6 +111,26 @@ const RegisterCheck film_groups(CheckSpec{
       const double ratio = c.h / reference::dowson_higginson_h_min(lc);
       return CheckValue{ratio / (1.6 / 2.65 * std::pow(r.materials_parameter, 0.06)), 1.0,
                         {{"h_C_m", c.h}, {"G_M", r.materials_parameter}}};
+    }});
+
+// The reference derives its own path of contact; the production geometry must put A..E at the
+// same places (distances from T1), or a TEHL-vs-ISO comparison point by point compares
+// different contacts.
+const RegisterCheck path_points(CheckSpec{
+    .id = "seed001.iso15144.path_points_vs_geometry", .section = section, .solver = "geometry",
+    .reference = solver, .quantity = "max |position of A..E| difference, reference vs solvers/geometry",
+    .unit = "mm", .tolerance = {1e-9, 0},
+    .justification = "the same exact construction on two routes: rounding only (~1e-13 mm on 200 mm)",
+    .tier = Tier::fast, .run = [](const CheckContext& ctx) {
+      const auto mc = seed_case(ctx);
+      const auto r = iso::evaluate(mc.gear);
+      const geometry::GearPairGeometry g(mc.gear.pair);
+      const auto& p = g.path();
+      const std::array<double, 7> solver_points = {p.A, p.AB, p.B, p.C, p.D, p.DE, p.E};
+      double worst = 0.0;
+      for (std::size_t i = 0; i < solver_points.size(); ++i)
+        worst = std::max(worst, std::abs(r.points[i].position - solver_points[i]));
+      return CheckValue{worst * 1e3, 0.0};
     }});
 
 std::string point_table(const iso::Result& r) {
