@@ -2,6 +2,7 @@
 // EHL at A, AB, B, C, D, DE, E of a gear pair's path of contact, seed 001).
 #include <algorithm>
 #include <iostream>
+#include <optional>
 #include <fmt/format.h>
 
 #include "ehl/thermal_mesh_path.h"
@@ -11,6 +12,7 @@
 #include "model/case_reader.h"
 #include "model/errors.h"
 #include "model/json_reader.h"
+#include "tehl_micropitting.h"
 #include "tehl_sections.h"
 
 namespace gearbench::app {
@@ -55,6 +57,10 @@ json run_tehl_path(const json& case_json) {
   root.optional_string("description");
   const auto c = model::read_thermal_path_case(root);
   const auto options = read_thermal_options(root);
+  std::optional<MicropittingCase> micropitting;
+  if (root.has("micropitting"))
+    micropitting = read_micropitting(root, model::GearCase{c.gear_pair, c.materials, c.operating, std::nullopt},
+                                     "tehl_path");
   root.finish();
 
   const geometry::GearPairGeometry geometry(c.gear_pair);
@@ -75,7 +81,7 @@ json run_tehl_path(const json& case_json) {
     p["hertz_pressure_Pa"] = pt.hertz_pressure;
     points.push_back(std::move(p));
   }
-  return {{"kind", "tehl_path"},
+  json out = {{"kind", "tehl_path"},
           {"inlet_temperature_K", c.inlet_temperature},
           {"inlet_viscosity_Pa_s", rheology.inlet_viscosity()},
           {"roelands_z", rheology.roelands_z()},
@@ -84,6 +90,8 @@ json run_tehl_path(const json& case_json) {
           {"minimum_film_point", result.points[static_cast<std::size_t>(result.minimum_film_point)].name},
           {"points", points},
           {"seconds", result.seconds}};
+  if (micropitting) out["micropitting"] = micropitting_json(compare_with_iso(result, c, *micropitting, options));
+  return out;
 }
 
 const RegisterKind tehl_point_kind({"tehl_point", "steady thermal line-contact EHL (generalized Reynolds, energy "

@@ -11,6 +11,7 @@
 #include "ehl/thermal_mesh_path.h"
 #include "model/case_reader.h"
 #include "model/json_reader.h"
+#include "tehl_micropitting.h"
 
 namespace gearbench::verification {
 namespace {
@@ -210,24 +211,46 @@ const RegisterCheck gupta(CheckSpec{
     }});
 
 // ---- seed 001 ---------------------------------------------------------------------------
-model::ThermalPathCase seed001(const CheckContext& ctx) {
+struct Seed001 {
+  model::ThermalPathCase thermal;
+  app::MicropittingCase micropitting;
+};
+
+Seed001 seed001(const CheckContext& ctx) {
   const auto j = model::read_json_file(ctx.case_path("seed001_tehl_path.json"));
   model::ObjectReader root(j, "");
-  return model::read_thermal_path_case(root);
+  Seed001 s;
+  s.thermal = model::read_thermal_path_case(root);
+  const auto& t = s.thermal;
+  s.micropitting = app::read_micropitting(root, model::GearCase{t.gear_pair, t.materials, t.operating, std::nullopt},
+                                          "tehl_path");
+  return s;
 }
 
-const ThermalPathResult& seed_run(const CheckContext& ctx) {
-  static std::map<std::string, ThermalPathResult> cache;
+/// The case as it is in cases/ (default grids), with its ISO/TR 15144-1 comparison, run once.
+struct SeedRun {
+  ThermalPathResult path;
+  app::TehlMicropitting micropitting;
+};
+
+const SeedRun& seed_run_full(const CheckContext& ctx) {
+  static std::map<std::string, SeedRun> cache;
   auto it = cache.find(ctx.cases_dir);
   if (it == cache.end()) {
     const auto s = seed001(ctx);
-    const geometry::GearPairGeometry g(s.gear_pair);
-    const lubricant::ThermalRheology rheology(s.lubricant, s.inlet_temperature);
-    const ThermalMeshPath path(g, s.operating, s.materials, rheology, s.solids, s.load_factors, s.load_sharing, {});
-    it = cache.emplace(ctx.cases_dir, path.run()).first;
+    const auto& c = s.thermal;
+    const geometry::GearPairGeometry g(c.gear_pair);
+    const lubricant::ThermalRheology rheology(c.lubricant, c.inlet_temperature);
+    const ThermalMeshPath path(g, c.operating, c.materials, rheology, c.solids, c.load_factors, c.load_sharing, {});
+    SeedRun run;
+    run.path = path.run();
+    run.micropitting = app::compare_with_iso(run.path, c, s.micropitting, {});
+    it = cache.emplace(ctx.cases_dir, std::move(run)).first;
   }
   return it->second;
 }
+
+const ThermalPathResult& seed_run(const CheckContext& ctx) { return seed_run_full(ctx).path; }
 
 const ThermalPathPoint& point(const ThermalPathResult& r, const std::string& name) {
   return *std::find_if(r.points.begin(), r.points.end(), [&](const auto& p) { return p.name == name; });
@@ -260,6 +283,42 @@ const RegisterCheck no_jump_at_C(CheckSpec{
       return CheckValue{point(r, "C").result.h_min / mean - 1.0, 0.0};
     }});
 
+const RegisterCheck below_iso(CheckSpec{
+    .id = "seed001.tehl.film_below_iso", .section = seed_section, .solver = "ehl.thermal_mesh_path",
+    .reference = "seed 001 fig. 2 (thermal EHL h_min below the ISO/TR 15144-1 film at every point) with "
+                 "reference/closed_form/iso15144_micropitting",
+    .quantity = "points of A … E where the thermal EHL h_min is not below the ISO film h_Y", .unit = "-",
+    .tolerance = {0.0, 0},
+    .justification = "the seed's claim holds at every point or it does not",
+    .tier = Tier::fast,
+    .run = [](const CheckContext& ctx) {
+      const auto& run = seed_run_full(ctx);
+      int above = 0;
+      nlohmann::json table = nlohmann::json::array();
+      for (std::size_t i = 0; i < run.path.points.size(); ++i) {
+        const double tehl = run.path.points[i].result.h_min, iso = run.micropitting.iso.gear.points[i].h;
+        if (!(tehl < iso)) ++above;
+        table.push_back({{"point", run.path.points[i].name}, {"tehl_um", tehl * 1e6}, {"iso_um", iso * 1e6}});
+      }
+      return CheckValue{static_cast<double>(above), 0.0, {{"films", table}}};
+    },
+    .recorded = 7.0, .recorded_tolerance = 0.0});
+
+const RegisterCheck s_lambda(CheckSpec{
+    .id = "seed001.tehl.S_lambda_below_iso", .section = seed_section, .solver = "ehl.thermal_mesh_path",
+    .reference = "seed 001 fig. 3 (thermal EHL S_λ below the ISO/TR 15144-1 S_λ)",
+    .quantity = "thermal EHL S_λ relative to ISO S_λ, 1 when not below (0 when below)", .unit = "-",
+    .tolerance = {0.0, 0},
+    .justification = "the seed's claim is an ordering: S_λ(TEHL) < S_λ(ISO)",
+    .tier = Tier::fast,
+    .run = [](const CheckContext& ctx) {
+      const auto& m = seed_run_full(ctx).micropitting;
+      return CheckValue{m.S_lambda < m.iso.S_lambda ? 0.0 : 1.0, 0.0,
+                        {{"S_lambda_tehl", m.S_lambda}, {"S_lambda_iso", m.iso.S_lambda},
+                         {"lambda_GFP_tehl", m.lambda_GFP}, {"lambda_GFP_iso", m.iso.lambda_GFP},
+                         {"reference_test_h_min_um_tehl", m.reference_point.result.h_min * 1e6}}};
+    }});
+
 /// Position of the largest film temperature rise in Hertz half-widths of the point.
 double peak_position(const ThermalPathPoint& p) {
   const double b = std::sqrt(8.0 * p.contact.load_per_length * p.contact.reduced_radius /
@@ -275,11 +334,12 @@ const RegisterCheck temperature_peak(CheckSpec{
     .justification = "the seed states a side, not a place: anywhere in −1 ≤ x/b ≤ 0 reproduces it",
     .tier = Tier::fast,
     .run = [](const CheckContext& ctx) { return CheckValue{peak_position(point(seed_run(ctx), "A")), -0.5}; },
-    .recorded = 0.2, .recorded_tolerance = 0.5});
+    .recorded = 0.32, .recorded_tolerance = 0.25});
 
 void add_seed_figures(const CheckContext& ctx, reports::Report& report) {
   const auto& r = seed_run(ctx);
-  std::vector<double> index, thermal, isothermal, rise;
+  const auto& m = seed_run_full(ctx).micropitting;
+  std::vector<double> index, thermal, isothermal, rise, iso_film;
   std::vector<std::string> labels;
   for (std::size_t i = 0; i < r.points.size(); ++i) {
     index.push_back(static_cast<double>(i));
@@ -287,10 +347,12 @@ void add_seed_figures(const CheckContext& ctx, reports::Report& report) {
     thermal.push_back(r.points[i].result.h_min * 1e6);
     isothermal.push_back(r.points[i].result.isothermal_h_min * 1e6);
     rise.push_back(r.points[i].result.temperature_rise_max);
+    iso_film.push_back(m.iso.gear.points[i].h * 1e6);
   }
   reports::Figure films{"seed001_tehl_film_along_path", seed_section, "Minimum film at A … E (seed 001 fig. 2)",
                         "point of the path of contact", "h_min [µm]",
-                        {{"thermal EHL", index, thermal}, {"isothermal EHL", index, isothermal}}};
+                        {{"thermal EHL", index, thermal}, {"isothermal EHL", index, isothermal},
+                         {"ISO/TR 15144-1 method B", index, iso_film}}};
   films.xtic_labels = labels;
   films.points = true;
   report.figures.push_back(films);
@@ -307,7 +369,7 @@ void add_seed_figures(const CheckContext& ctx, reports::Report& report) {
     const auto x = scaled(t.x, 1.0 / b);
     std::vector<double> mid, wall_a, wall_b;
     const std::size_t nz = t.zeta.size();
-    const double T0 = seed001(ctx).inlet_temperature;
+    const double T0 = seed001(ctx).thermal.inlet_temperature;
     for (const auto& column : t.film_temperature) {
       wall_a.push_back(column.front() - T0);
       mid.push_back(column[nz / 2] - T0);
@@ -333,12 +395,39 @@ void add_seed_figures(const CheckContext& ctx, reports::Report& report) {
       "on the inlet side: in a Newtonian film the shear heating peaks with the pressure-raised viscosity in the "
       "Hertzian zone and the oil keeps heating while it crosses it; a peak before the zone would need the "
       "heating there capped (a limiting shear stress), which the seed does not state.",
-      lubricant::ThermalRheology(seed001(ctx).lubricant, seed001(ctx).inlet_temperature).inlet_viscosity(),
+      lubricant::ThermalRheology(seed001(ctx).thermal.lubricant, seed001(ctx).thermal.inlet_temperature).inlet_viscosity(),
       A.x.size(), r.seconds, r.points[static_cast<std::size_t>(r.minimum_film_point)].name,
       r.points[static_cast<std::size_t>(r.minimum_film_point)].result.h_min * 1e6,
       r.points[static_cast<std::size_t>(r.minimum_film_point)].result.isothermal_h_min * 1e6, A.temperature_rise_max,
       C.temperature_rise_max, C.h_min * 1e6, C.isothermal_h_min * 1e6, peak_position(point(r, "A")))});
 }
+
+/// The S_λ comparison and why the films part from ISO's.
+void add_micropitting_note(const CheckContext& ctx, reports::Report& report) {
+  const auto& run = seed_run_full(ctx);
+  const auto& m = run.micropitting;
+  std::string rows;
+  for (std::size_t i = 0; i < run.path.points.size(); ++i)
+    rows += fmt::format("{} {:.4f}/{:.4f}/{:.3f}/{:.3f}; ", run.path.points[i].name, run.path.points[i].result.h_min * 1e6,
+                        m.iso.gear.points[i].h * 1e6, m.lambda[i], m.iso.gear.points[i].lambda);
+  report.notes.push_back({seed_section, fmt::format(
+      "Micropitting safety (point h_TEHL/h_ISO [µm]/λ_TEHL/λ_ISO): {}S_λ = {:.3f} by thermal EHL against {:.3f} by "
+      "ISO/TR 15144-1 method B, so the thermal EHL rates the gear lower, as the seed reports. Each uses its own "
+      "reference film of the FZG C-GF/8.3/90 test at SKS 10 (265.1 N·m, A): thermal EHL {:.4f} µm at "
+      "p_H {:.0f} MPa (λ_GFP {:.3f}), ISO λ_GFP {:.3f}; the seed's 1476.2 MPa at the test gear's A comes from "
+      "its method A (LTCA), method B's load share 1/3 gives the lower pressure. The thermal EHL films lie "
+      "above the ISO films at all seven points, where the seed has them below: ISO evaluates the inlet at the "
+      "bulk temperature θ_M = {:.1f} K (the oil and both solids at {:.1f} K in the thermal EHL, as the seed "
+      "states T0) and loads A and E with the buttressing factor 1.3 of helical gears; with the thermal EHL "
+      "inlet at θ_M instead, its film falls below ISO's from AB to DE and lies within 4 % of it at A and E "
+      "(measured once, 0.0815 against 0.0785 µm at A). Which temperature the seed's TEHL used for the solids "
+      "and the inlet beyond 'T0 = 363 K' is not stated.",
+      rows, m.S_lambda, m.iso.S_lambda, m.reference_point.result.h_min * 1e6, m.reference_point.hertz_pressure * 1e-6,
+      m.lambda_GFP, m.iso.lambda_GFP, m.iso.gear.bulk_temperature, seed001(ctx).thermal.inlet_temperature)});
+}
+
+const RegisterSection micropitting_note(SectionSpec{.id = "seed001_tehl_micropitting", .tier = Tier::fast,
+                                                    .add = add_micropitting_note});
 
 const RegisterSection seed_figures(SectionSpec{.id = "seed001_tehl", .tier = Tier::fast, .add = add_seed_figures});
 
