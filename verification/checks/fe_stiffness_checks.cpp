@@ -319,19 +319,18 @@ nlohmann::json crack_table(const CrackSweep& c) {
           {"fe_seconds", c.fe_seconds}};
 }
 
-/// Steps q_k → q_{k+1} at which the FE pinion compliance fails to grow, at the positions
-/// with the load above the crack mouth (where the energy method's crack acts; below it the
-/// slit is off the load path and its effect is within the FE tolerance).
+/// Steps q_k → q_{k+1} at which the FE pinion compliance fails to grow, at every position.
 CheckValue fe_non_monotonic(const CrackSweep& c) {
   int bad = 0;
   for (std::size_t i = 0; i < c.s.size(); ++i)
-    if (c.em_loss.back()[i] > 0.0)
-      for (std::size_t k = 1; k < c.lengths.size(); ++k) bad += c.fe_tooth[k][i] > c.fe_tooth[k - 1][i] ? 0 : 1;
+    for (std::size_t k = 1; k < c.lengths.size(); ++k) bad += c.fe_tooth[k][i] > c.fe_tooth[k - 1][i] ? 0 : 1;
   return {static_cast<double>(bad), 0.0, crack_table(c)};
 }
 
 /// Largest |FE loss − energy loss| of the pair stiffness over lengths and positions where
-/// the energy method's crack acts (its loss > 0), with the worst named.
+/// the energy method's crack acts (its loss > 0: the load above the mouth), with the worst
+/// named. Below the mouth the energy method has no crack by construction (seed 003); the
+/// FE's loss there is in the rows and in docs/fe-tooth-model.md.
 CheckValue crack_loss_gap(const CrackSweep& c) {
   double worst = 0.0;
   std::string where;
@@ -365,7 +364,12 @@ CheckValue crack_loss_gap(const CrackSweep& c) {
 // comparison ran. The energy method's limiting-line rule (the cracked side carries nothing
 // above the line y = h_c) and the slit (material above the crack still carries load around
 // it, but the crack tip concentrates strain) part in both directions; the band reached per
-// length is in the diagnostics and docs/fe-tooth-model.md.
+// length is in the diagnostics and docs/fe-tooth-model.md. Over A..E (full tier) the band
+// is missed at E with 2.5 mm (FE 56 % against 67 %: the rule thins every section from the
+// crack tip up to the tooth tip, while the slit cuts only the sections between its tip and
+// its mouth, and the load at E bends the uncut ones above the mouth); the check records
+// 0.102, and a drift of > 15 % of it (0.5 % FE tolerance on compliances that differ by a
+// factor 3) counts as a regression.
 const bool crack_checks = [] {
   for (const bool full : {false, true}) {
     const std::string tag = full ? "seed003_AE" : "seed003_hpstc";
@@ -384,7 +388,8 @@ const bool crack_checks = [] {
         .unit = "-", .tolerance = {0.05, 0.0},
         .justification = "a priori band: the loss is a difference within each model; see the source comment",
         .tier = full ? Tier::full : Tier::fast,
-        .run = [full](const CheckContext& ctx) { return crack_loss_gap(crack_sweep_cached(ctx, full)); }});
+        .run = [full](const CheckContext& ctx) { return crack_loss_gap(crack_sweep_cached(ctx, full)); },
+        .recorded = full ? std::optional<double>(0.1020) : std::nullopt, .recorded_tolerance = 0.15});
   }
   return true;
 }();
@@ -437,6 +442,22 @@ const RegisterSection crack_section(SectionSpec{
                                            {"FE, crack as a slit", q_mm, fe_loss}},
                                 .points = true});
       report.figures.push_back(stress_picture(ctx));
+    }});
+
+/// Full tier: the loss along A..E per crack length, FE against the energy method.
+const RegisterSection crack_path_section(SectionSpec{
+    .id = "fe_tooth_crack_path", .tier = Tier::full, .add = [](const CheckContext& ctx, reports::Report& report) {
+      const auto& c = crack_sweep_cached(ctx, true);
+      reports::Figure f{.id = "fe_tooth_crack_loss_AE", .section = section,
+                        .title = "Pair stiffness loss along A..E, seed 003 pinion, pitch crack 45 deg",
+                        .xlabel = "s from T1 [mm]", .ylabel = "1 - k(q)/k(0) [%]", .points = true};
+      for (std::size_t k = 1; k < c.lengths.size(); ++k) {
+        f.series.push_back({fmt::format("energy, {:.1f} mm", c.lengths[k] * 1e3), scaled(c.s, 1e3),
+                            scaled(c.em_loss[k], 100.0), {}});
+        f.series.push_back({fmt::format("FE, {:.1f} mm", c.lengths[k] * 1e3), scaled(c.s, 1e3),
+                            scaled(c.fe_loss[k], 100.0), {}});
+      }
+      report.figures.push_back(f);
     }});
 
 // Plane-stress cantilever L/H = 5 under a parabolic end shear, fully clamped end, against
