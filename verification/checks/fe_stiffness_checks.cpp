@@ -1,8 +1,9 @@
 // The deal.II finite-element tooth reference (reference/fe_tooth) on its own — the
 // cantilever against Timoshenko beam theory, the convergence of the tooth compliance — and
 // against the energy method (solvers/stiffness) per mesh position, per gear and for the
-// pair: seed 003's 20/25 pair (fast tier), 19/48 m 3.2 and 62/62 m 2 (full tier).
-// docs/fe-tooth-model.md explains what the FE compliance means and where the models part.
+// pair: seed 003's 20/25 pair (fast tier), 19/48 m 3.2 and 62/62 m 2 (full tier); and the
+// seed 003 pitch crack as a slit against the energy method's cracked tooth (stiffness loss
+// against crack length). docs/fe-tooth-model.md explains what the FE compliance means and where the models part.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -292,8 +293,8 @@ const std::vector<double> seed003_cracks{0.0, 1e-3, 2e-3, 2.5e-3};
 
 /// Fast tier: one position, the pinion's highest point of single-tooth contact (A + p_b),
 /// where the crack acts in both models and one tooth pair carries the load; FE tolerance
-/// 1 % (coarse: two Kelly cycles fewer than the 0.5 % bar). Full tier: 5 positions A..E at
-/// the 0.5 % bar.
+/// 1 % (coarse: it stops a Kelly cycle or two before the 0.5 % bar). Full tier: 5 positions
+/// A..E at the 0.5 % bar.
 const CrackSweep& crack_sweep_cached(const CheckContext& ctx, bool full) {
   return cached(full ? "crack_full" : "crack_fast", [&] {
     const auto gc = ctx.gear_case("seed003_spur_stiffness.json");
