@@ -43,6 +43,9 @@ bool render(const Figure& figure, const std::string& terminal, const std::string
        << "set ylabel " << quoted(figure.ylabel) << " noenhanced\n"
        << "set grid\nset key below noenhanced\n"
        << (figure.log_y ? "set logscale y\n" : "");
+    if (!figure.colour_label.empty())
+      gp << "set size ratio -1\nset palette rgbformulae 22,13,-31\nset cblabel " << quoted(figure.colour_label)
+         << " noenhanced\n";
     if (!figure.xtic_labels.empty()) {
       gp << "set xtics rotate by -45 noenhanced (";
       for (std::size_t i = 0; i < figure.xtic_labels.size(); ++i)
@@ -52,15 +55,25 @@ bool render(const Figure& figure, const std::string& terminal, const std::string
     for (std::size_t i = 0; i < figure.series.size(); ++i) {
       gp << "$d" << i << " << EOD\n";
       const auto& s = figure.series[i];
-      for (std::size_t k = 0; k < s.x.size() && k < s.y.size(); ++k)
-        if (std::isfinite(s.x[k]) && std::isfinite(s.y[k])) gp << fmt::format("{:.10g} {:.10g}\n", s.x[k], s.y[k]);
+      const bool coloured = !figure.colour_label.empty();
+      for (std::size_t k = 0; k < s.x.size() && k < s.y.size(); ++k) {
+        if (!std::isfinite(s.x[k]) || !std::isfinite(s.y[k])) continue;
+        if (!coloured) {
+          gp << fmt::format("{:.10g} {:.10g}\n", s.x[k], s.y[k]);
+        } else if (k < s.z.size() && std::isfinite(s.z[k])) {
+          gp << fmt::format("{:.10g} {:.10g} {:.10g}\n", s.x[k], s.y[k], s.z[k]);
+        }
+      }
       gp << "EOD\n";
     }
-    const std::string style = figure.impulses ? "impulses" : figure.points ? "linespoints pt 7" : "lines";
+    const std::string style = !figure.colour_label.empty() ? "points pt 5 ps 0.3 palette"
+                              : figure.impulses          ? "impulses"
+                              : figure.points            ? "linespoints pt 7"
+                                                         : "lines";
     gp << "plot ";
     for (std::size_t i = 0; i < figure.series.size(); ++i)
-      gp << (i ? ", " : "") << "$d" << i << " using 1:2 with " << style << " lw 2 title "
-         << quoted(figure.series[i].label);
+      gp << (i ? ", " : "") << "$d" << i << (figure.colour_label.empty() ? " using 1:2 with " : " using 1:2:3 with ")
+         << style << (figure.colour_label.empty() ? " lw 2" : "") << " title " << quoted(figure.series[i].label);
     gp << "\n";
   }
   const int status = std::system(fmt::format("{} {} 2>/dev/null", quoted(gnuplot), quoted(script_path)).c_str());
@@ -85,7 +98,10 @@ bool render_pdf(const Figure& figure, const std::string& pdf_path) {
 void write_figure_csv(const Figure& figure, const std::string& csv_path) {
   std::ofstream out(csv_path);
   const bool labels = !figure.xtic_labels.empty();
-  out << "series," << csv_field(figure.xlabel) << (labels ? ",label," : ",") << csv_field(figure.ylabel) << "\n";
+  const bool coloured = !figure.colour_label.empty();
+  out << "series," << csv_field(figure.xlabel) << (labels ? ",label," : ",") << csv_field(figure.ylabel);
+  if (coloured) out << "," << csv_field(figure.colour_label);
+  out << "\n";
   for (const auto& s : figure.series)
     for (std::size_t k = 0; k < s.x.size() && k < s.y.size(); ++k) {
       // No NaN in a report: a non-finite value is an empty cell.
@@ -97,7 +113,9 @@ void write_figure_csv(const Figure& figure, const std::string& csv_path) {
                     ? csv_field(figure.xtic_labels[static_cast<std::size_t>(i)]) + ","
                     : std::string(",");
       }
-      out << csv_field(s.label) << "," << number(s.x[k]) << "," << label << number(s.y[k]) << "\n";
+      out << csv_field(s.label) << "," << number(s.x[k]) << "," << label << number(s.y[k]);
+      if (coloured) out << "," << (k < s.z.size() ? number(s.z[k]) : std::string());
+      out << "\n";
     }
   out.flush();
   if (!out) throw std::runtime_error("cannot write " + csv_path);
@@ -106,7 +124,8 @@ void write_figure_csv(const Figure& figure, const std::string& csv_path) {
 Figure figure_from_json(const nlohmann::json& j) {
   Figure f{.id = j.at("id").get<std::string>(), .section = j.value("section", ""), .title = j.value("title", ""),
            .xlabel = j.value("xlabel", ""), .ylabel = j.value("ylabel", ""), .log_y = j.value("log_y", false),
-           .impulses = j.value("impulses", false), .points = j.value("points", false)};
+           .impulses = j.value("impulses", false), .points = j.value("points", false),
+           .colour_label = j.value("colour_label", "")};
   if (j.contains("xtic_labels")) f.xtic_labels = j["xtic_labels"].get<std::vector<std::string>>();
   // null (a non-finite value in the report) stays non-finite and is skipped when drawn.
   const auto numbers = [](const nlohmann::json& a) {
@@ -115,7 +134,8 @@ Figure figure_from_json(const nlohmann::json& j) {
     return v;
   };
   for (const auto& s : j.value("series", nlohmann::json::array()))
-    f.series.push_back({s.value("label", ""), numbers(s.at("x")), numbers(s.at("y"))});
+    f.series.push_back({s.value("label", ""), numbers(s.at("x")), numbers(s.at("y")),
+                        s.contains("z") ? numbers(s["z"]) : std::vector<double>{}});
   return f;
 }
 

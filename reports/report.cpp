@@ -192,10 +192,15 @@ json to_json(const Report& report) {
       for (double x : s.x) xs.push_back(number(x));
       for (double y : s.y) ys.push_back(number(y));
       series.push_back({{"label", s.label}, {"x", xs}, {"y", ys}});
+      if (!s.z.empty()) {
+        json zs = json::array();
+        for (double z : s.z) zs.push_back(number(z));
+        series.back()["z"] = zs;
+      }
     }
     figures.push_back({{"id", f.id}, {"section", f.section}, {"title", f.title},
                        {"xlabel", f.xlabel}, {"ylabel", f.ylabel}, {"series", series},
-                       {"log_y", f.log_y}, {"impulses", f.impulses},
+                       {"log_y", f.log_y}, {"impulses", f.impulses}, {"colour_label", f.colour_label},
                        {"file", "figures/" + f.id + ".svg"}, {"data", "figures/" + f.id + ".csv"}});
   }
   json notes = json::array();

@@ -48,6 +48,7 @@ struct Series {
   std::string label;
   std::vector<double> x;
   std::vector<double> y;
+  std::vector<double> z;  ///< colour value per point (Figure::colour_label set), else empty
 };
 
 struct Figure {
@@ -62,6 +63,9 @@ struct Figure {
   /// Categorical x axis: label i is drawn at x = i (e.g. commits of a performance history).
   std::vector<std::string> xtic_labels;
   bool points = false;    ///< mark every point (sparse data such as one value per commit)
+  /// Non-empty: a colour map — each series' points (x, y) filled by z on a palette with
+  /// this label, equal axis scales (e.g. a stress field sampled on a grid).
+  std::string colour_label;
 };
 
 /// Free text for a section (e.g. what a seed reproduction reached and why it differs).

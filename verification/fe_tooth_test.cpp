@@ -113,5 +113,47 @@ TEST(FeToothCompliance, ConvergesAndIgnoresTheLoadPatch) {
   EXPECT_NEAR(c2.compliance / c.compliance, 1.0, 0.005);
 }
 
+// Seed 003's 2.5 mm pitch crack at 45° meshed as a slit: the mouth lies on the flank at
+// the reference circle, the tip q further at ν to the centre line, and gmsh's Plugin(Crack)
+// leaves duplicated nodes along it — every slit node but the tip appears twice (tolerance
+// 1e-12 m: the copies are the same coordinates). Without the plugin the count is zero.
+TEST(FeToothCrack, SlitHasDuplicatedNodes) {
+  const auto pair = seed003_pair();
+  const auto tooth = generate_tooth(pair, 0);
+  const Slit slit = pitch_crack_slit(tooth, ToothCrack{0, 2.5e-3, M_PI / 4});
+  EXPECT_NEAR(std::hypot(slit.mouth[0], slit.mouth[1]), tooth.radii.pitch, 1e-9);
+  EXPECT_NEAR(std::hypot(slit.tip[0] - slit.mouth[0], slit.tip[1] - slit.mouth[1]), 2.5e-3, 1e-12);
+  EXPECT_LT(slit.tip[1], 0.0);  // case 3 of seed 003: past the centre line
+  GearMeshSizes sizes;
+  sizes.near = 0.5e-3;
+  sizes.far = 3e-3;
+  sizes.growth = 0.2;
+  sizes.focus = {0.5 * (tooth.radii.root + tooth.radii.tip), 0.0};
+  const auto mesh = mesh_gear(tooth, 0.5 * tooth.radii.root, sizes, slit);
+  std::vector<char> used(mesh.vertices.size(), 0);
+  for (const auto& q : mesh.quads)
+    for (const auto v : q) used[v] = 1;
+  int on_slit = 0, duplicated = 0;
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    if (!used[i] || distance_to_slit(slit, mesh.vertices[i]) > 1e-12) continue;
+    ++on_slit;
+    for (std::size_t j = 0; j < mesh.vertices.size(); ++j)
+      if (j != i && used[j] && std::hypot(mesh.vertices[j][0] - mesh.vertices[i][0],
+                                          mesh.vertices[j][1] - mesh.vertices[i][1]) < 1e-12) {
+        ++duplicated;
+        break;
+      }
+  }
+  std::printf("slit: %d nodes on it, %d of them duplicated\n", on_slit, duplicated);
+  EXPECT_GE(on_slit, 5);
+  EXPECT_EQ(duplicated, on_slit - 1);  // all but the tip
+}
+
+// A crack that leaves less than 10 % of the section is a broken tooth: InputError.
+TEST(FeToothCrack, RejectsABrokenTooth) {
+  const auto tooth = generate_tooth(seed003_pair(), 0);
+  EXPECT_THROW(pitch_crack_slit(tooth, ToothCrack{0, 4e-3, M_PI / 4}), InputError);
+}
+
 }  // namespace
 }  // namespace gearbench::reference::fe

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <unistd.h>
 
@@ -90,6 +91,32 @@ TEST(WriteReport, NeverOverwritesAndLeavesNoTemporary) {
   for (const auto& entry : std::filesystem::directory_iterator(dir))
     EXPECT_NE(entry.path().filename().string().rfind(".tmp", 0), 0u) << entry.path();
   std::filesystem::remove_all(dir);
+}
+
+// A colour-map figure (a field sampled on points) keeps its colour values through the CSV
+// and the report JSON: the third column is z, and figure_from_json restores it exactly
+// (values chosen binary-exact); a non-finite z becomes an empty cell, never "nan".
+TEST(Figure, ColourMapKeepsItsValues) {
+  Figure f{.id = "field", .section = "s", .title = "t", .xlabel = "x [mm]", .ylabel = "y [mm]",
+           .series = {{"field", {0.0, 0.5, 1.0}, {0.0, 0.25, 1.0}, {2.0, std::nan(""), 3.5}}},
+           .colour_label = "von Mises [MPa]"};
+  const auto csv = std::filesystem::temp_directory_path() / ("gearbench_colour_" + std::to_string(::getpid()) + ".csv");
+  write_figure_csv(f, csv.string());
+  std::ifstream in(csv);
+  std::string header, row0, row1;
+  std::getline(in, header);
+  std::getline(in, row0);
+  std::getline(in, row1);
+  EXPECT_EQ(header, "series,x [mm],y [mm],von Mises [MPa]");
+  EXPECT_EQ(row0, "field,0,0,2");
+  EXPECT_EQ(row1, "field,0.5,0.25,");
+  std::filesystem::remove(csv);
+  const nlohmann::json j = {{"id", "field"}, {"colour_label", "von Mises [MPa]"},
+                            {"series", {{{"label", "field"}, {"x", {0.0, 1.0}}, {"y", {0.0, 1.0}}, {"z", {2.0, 3.5}}}}}};
+  const auto back = figure_from_json(j);
+  EXPECT_EQ(back.colour_label, "von Mises [MPa]");
+  ASSERT_EQ(back.series.at(0).z.size(), 2u);
+  EXPECT_EQ(back.series[0].z[1], 3.5);
 }
 
 }  // namespace

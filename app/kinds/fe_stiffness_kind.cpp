@@ -2,9 +2,12 @@
 // docs/fe-tooth-model.md) along the path of contact of a spur pair: each gear's tooth
 // compliance, the pair stiffness with Hertz added, the convergence of every solve, and
 // optionally a VTU file (displacement, von Mises) of the first position's pinion solve.
+// The optional "crack" section (the stiffness kind's keys, type "pitch") cracks one gear's
+// loaded tooth as a slit in the mesh.
 #include <cmath>
 #include <fstream>
 
+#include "crack_section.h"
 #include "fe_tooth/fe_tooth_stiffness.h"
 #include "kind_registry.h"
 #include "model/case_reader.h"
@@ -26,6 +29,15 @@ fe::ElasticOptions read_fe_options(model::ObjectReader& root) {
   o.tolerance = s.optional_number("tolerance", {0.0, 0.5, true, true}).value_or(o.tolerance);
   s.finish();
   return o;
+}
+
+/// The stiffness kind's "crack" section; the FE slit models seed 003's pitch crack.
+std::optional<fe::ToothCrack> read_fe_crack(model::ObjectReader& root) {
+  const auto c = read_crack(root, 2);
+  if (!c) return std::nullopt;
+  if (c->crack.type != stiffness::Crack::Type::pitch)
+    throw InputError("crack.type = root: kind fe_stiffness models the pitch crack (seed 003) only");
+  return fe::ToothCrack{c->gear, c->crack.length, c->crack.angle};
 }
 
 fe::FeToothOptions read_options(model::ObjectReader& root, const json& case_json) {
@@ -50,6 +62,7 @@ fe::FeToothOptions read_options(model::ObjectReader& root, const json& case_json
     o.rigid_body = case_json["rigid_body"].get<bool>();
   }
   o.fe = read_fe_options(root);
+  o.crack = read_fe_crack(root);
   return o;
 }
 
@@ -63,14 +76,22 @@ json convergence_json(const fe::ElasticResult& r) {
           {"cycles", rows}, {"table", r.table}};
 }
 
+/// The slit as meshed (tooth coordinates, mm), or null for healthy teeth.
+json crack_json(const fe::FeToothStiffness& model) {
+  for (int g = 0; g < 2; ++g)
+    if (const auto& s = model.slit(g))
+      return {{"gear", g + 1},
+              {"mouth_mm", {s->mouth[0] * 1e3, s->mouth[1] * 1e3}},
+              {"tip_mm", {s->tip[0] * 1e3, s->tip[1] * 1e3}}};
+  return nullptr;
+}
+
 json run_fe_stiffness(const json& case_json) {
   model::ObjectReader root(case_json, "");
   root.string("kind");
   root.optional_string("description");
   const auto gear_case = model::read_gear_case(root);
   if (!gear_case.materials) throw InputError("materials: missing required key (kind fe_stiffness)");
-  if (root.has("crack"))
-    throw InputError("crack: kind fe_stiffness models healthy teeth only (cracks as slits are not implemented)");
   const int count = root.optional_integer("positions", 1, 200).value_or(5);
   auto options = read_options(root, case_json);
   const auto vtu_path = root.optional_string("vtu_output");
@@ -90,7 +111,8 @@ json run_fe_stiffness(const json& case_json) {
   json positions_mm = json::array(), pair = json::array(), pair_fe_contact = json::array(),
        hertz = json::array(), seconds = json::array();
   std::array<json, 2> compliance{json::array(), json::array()}, contact{json::array(), json::array()},
-      convergence{json::array(), json::array()};
+      convergence{json::array(), json::array()}, probe_to_crack{json::array(), json::array()},
+      crack_compliance{json::array(), json::array()};
   for (const auto& p : r.positions) {
     positions_mm.push_back(p.path_position * 1e3);
     pair.push_back(p.pair_stiffness);
@@ -101,13 +123,18 @@ json run_fe_stiffness(const json& case_json) {
       compliance[g].push_back(p.tooth[g].compliance);
       contact[g].push_back(p.tooth[g].contact_compliance);
       convergence[g].push_back(convergence_json(p.tooth[g].fe));
-      t += p.tooth[g].fe.seconds;
+      probe_to_crack[g].push_back(p.tooth[g].probe_to_crack * 1e3);
+      crack_compliance[g].push_back(p.tooth[g].crack_compliance);
+      t += p.tooth[g].seconds;
     }
     seconds.push_back(t);
   }
   json gears = json::array();
   for (std::size_t g = 0; g < 2; ++g)
     gears.push_back({{"tooth_compliance_m_per_N", compliance[g]},
+                     {"cracked", model.slit(static_cast<int>(g)).has_value()},
+                     {"crack_compliance_m_per_N", crack_compliance[g]},
+                     {"probe_to_crack_mm", probe_to_crack[g]},
                      {"load_patch_compliance_m_per_N", contact[g]},
                      {"root_radius_mm", r.radii[g].root * 1e3},
                      {"tip_radius_mm", r.radii[g].tip * 1e3},
@@ -117,6 +144,7 @@ json run_fe_stiffness(const json& case_json) {
   return {{"kind", "fe_stiffness"},
           {"plane", options.plane_strain ? "strain" : "stress"},
           {"rigid_body", options.rigid_body},
+          {"crack", crack_json(model)},
           {"path_of_contact_mm", {{"A", path.A * 1e3}, {"E", path.E * 1e3}, {"T1T2", path.t1t2 * 1e3}}},
           {"path_position_mm", positions_mm},
           {"gears", gears},

@@ -7,6 +7,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_refinement.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold.h>
@@ -207,6 +208,15 @@ void solve_system(const DoFHandler<2>& dof, const ElasticProblem& p, const Lame&
 
 /// Von Mises stress from the displacement gradient; σ_zz = λ(ε_xx + ε_yy) in plane strain,
 /// 0 in plane stress.
+double von_mises(const Tensor<2, 2>& g, const Lame& c, bool plane_strain) {
+  const double exx = g[0][0], eyy = g[1][1], exy = 0.5 * (g[0][1] + g[1][0]);
+  const double tr = c.lambda * (exx + eyy);
+  const double sxx = tr + 2 * c.mu * exx, syy = tr + 2 * c.mu * eyy, sxy = 2 * c.mu * exy;
+  const double szz = plane_strain ? tr : 0.0;
+  return std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+                   3 * sxy * sxy);
+}
+
 class VonMises : public DataPostprocessorScalar<2> {
  public:
   VonMises(Lame c, bool plane_strain)
@@ -214,13 +224,9 @@ class VonMises : public DataPostprocessorScalar<2> {
   void evaluate_vector_field(const DataPostprocessorInputs::Vector<2>& in,
                              std::vector<Vector<double>>& out) const override {
     for (std::size_t q = 0; q < out.size(); ++q) {
-      const auto& g = in.solution_gradients[q];
-      const double exx = g[0][0], eyy = g[1][1], exy = 0.5 * (g[0][1] + g[1][0]);
-      const double tr = c_.lambda * (exx + eyy);
-      const double sxx = tr + 2 * c_.mu * exx, syy = tr + 2 * c_.mu * eyy, sxy = 2 * c_.mu * exy;
-      const double szz = plane_strain_ ? tr : 0.0;
-      out[q](0) = std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
-                            3 * sxy * sxy);
+      Tensor<2, 2> g;
+      for (unsigned i = 0; i < 2; ++i) g[i] = in.solution_gradients[q][i];
+      out[q](0) = von_mises(g, c_, plane_strain_);
     }
   }
 
@@ -241,6 +247,56 @@ std::string write_vtu(const DoFHandler<2>& dof, const Vector<double>& u, const L
   std::ostringstream os;
   out.write_vtu(os);
   return os.str();
+}
+
+/// The solution on the grid of p.field_*: each cell takes the grid points inside its
+/// bounding box that map into its reference square (MappingQ1's inverse), and evaluates
+/// there by FEValues on those reference points.
+std::vector<FieldSample> sample_field(const DoFHandler<2>& dof, const Vector<double>& u, const Lame& material,
+                                      const ElasticProblem& p) {
+  std::vector<FieldSample> out;
+  const auto& fe = dof.get_fe();
+  const MappingQ1<2> mapping;
+  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+  const double h = p.field_spacing;
+  const auto lo = p.field_lower, hi = p.field_upper;
+  for (const auto& cell : dof.active_cell_iterators()) {
+    const auto box = cell->bounding_box();
+    const double x0 = std::max(lo[0], box.lower_bound(0)), x1 = std::min(hi[0], box.upper_bound(0));
+    const double y0 = std::max(lo[1], box.lower_bound(1)), y1 = std::min(hi[1], box.upper_bound(1));
+    if (x0 > x1 || y0 > y1) continue;
+    std::vector<Point<2>> real, unit;
+    for (double y = lo[1] + h * std::ceil((y0 - lo[1]) / h); y <= y1; y += h)
+      for (double x = lo[0] + h * std::ceil((x0 - lo[0]) / h); x <= x1; x += h) {
+        try {
+          const Point<2> r = mapping.transform_real_to_unit_cell(cell, Point<2>(x, y));
+          // Half-open square: a point on a shared edge belongs to one cell only.
+          if (r[0] >= 0 && r[0] < 1 && r[1] >= 0 && r[1] < 1) {
+            real.emplace_back(x, y);
+            unit.push_back(r);
+          }
+        } catch (const Mapping<2>::ExcTransformationFailed&) {
+          continue;  // far outside this cell: not its point
+        }
+      }
+    if (unit.empty()) continue;
+    FEValues<2> v(mapping, fe, Quadrature<2>(unit), update_values | update_gradients);
+    v.reinit(cell);
+    cell->get_dof_indices(dofs);
+    const double factor = p.stiffness_factor ? p.stiffness_factor(vec(cell->center())) : 1.0;
+    for (unsigned q = 0; q < unit.size(); ++q) {
+      FieldSample f{vec(real[q]), {0.0, 0.0}, 0.0};
+      Tensor<2, 2> g;
+      for (unsigned i = 0; i < dofs.size(); ++i) {
+        const unsigned comp = fe.system_to_component_index(i).first;
+        f.displacement[comp] += u(dofs[i]) * v.shape_value(i, q);
+        g[comp] += u(dofs[i]) * v.shape_grad(i, q);
+      }
+      f.von_mises = von_mises(g, {factor * material.lambda, factor * material.mu}, p.material.plane_strain);
+      out.push_back(f);
+    }
+  }
+  return out;
 }
 
 /// Observed order in h of the change between cycles: with N dofs ~ h^−2 in 2D,
@@ -299,13 +355,14 @@ ElasticResult solve_elastic(const ElasticProblem& p, const ElasticOptions& o) {
     // f·u is the work of the load; constrained rows of f are condensed onto their masters
     // and u satisfies the constraints, so the condensed product equals the full one.
     row.load_displacement = (s.rhs * s.solution) / p.force_per_thickness;
+    const auto measure = [&p](const CycleRow& cr) { return p.converge_on_load ? cr.load_displacement : cr.value; };
     if (!r.cycles.empty()) {
-      row.change = std::abs(row.value - r.cycles.back().value) / std::abs(row.value);
+      row.change = std::abs(measure(row) - measure(r.cycles.back())) / std::abs(measure(row));
       row.rate = observed_rate(r.cycles.back(), row);
       table.add_value("cycle", cycle);
       table.add_value("cells", row.cells);
       table.add_value("dofs", row.dofs);
-      table.add_value("value", row.value);
+      table.add_value("value", measure(row));
       table.add_value("change", row.change);
     }
     r.cycles.push_back(row);
@@ -325,6 +382,7 @@ ElasticResult solve_elastic(const ElasticProblem& p, const ElasticOptions& o) {
   r.value = r.cycles.back().value;
   r.observed_rate = r.cycles.back().rate;
   if (o.vtu) r.vtu = write_vtu(dof, s.solution, c, p.material.plane_strain);
+  if (p.field_spacing > 0.0) r.field = sample_field(dof, s.solution, c, p);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   dof.clear();
   return r;

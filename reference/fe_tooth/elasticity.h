@@ -43,6 +43,20 @@ struct ElasticProblem {
   std::function<double(const Vec2& cell_centre)> stiffness_factor;
   /// The result is u(probe)·probe_direction.
   Vec2 probe{}, probe_direction{};
+  /// Converge on the load patch's work-conjugate displacement instead of the probe (a
+  /// cracked body, where a probe near the slit sees one lip only).
+  bool converge_on_load = false;
+  /// Optional (spacing > 0): the last solve sampled on a grid of this spacing over the box
+  /// [field_lower, field_upper]; points outside the body are skipped.
+  Vec2 field_lower{}, field_upper{};
+  double field_spacing = 0.0;
+};
+
+/// Displacement and von Mises stress at one point of the body.
+struct FieldSample {
+  Vec2 point{};
+  Vec2 displacement{};  ///< [m]
+  double von_mises = 0.0;  ///< [Pa]
 };
 
 struct ElasticOptions {
@@ -59,7 +73,7 @@ struct CycleRow {
   unsigned cells = 0;
   unsigned dofs = 0;
   double value = 0.0;   ///< probed displacement [m]
-  double change = 0.0;  ///< |value − previous| / |value| (0 for the first cycle)
+  double change = 0.0;  ///< relative change of the converged measure (0 for the first cycle)
   double rate = 0.0;    ///< observed order in h of the change (0 where undefined)
   /// Work-conjugate displacement of the load patch, f·u / resultant [m]: the mean
   /// displacement along load_direction weighted by the traction, local indentation included.
@@ -73,6 +87,7 @@ struct ElasticResult {
   double observed_rate = 0.0;    ///< of the last cycle (0 if undefined)
   std::string table;             ///< deal.II ConvergenceTable, text
   std::string vtu;               ///< when asked for
+  std::vector<FieldSample> field;  ///< when field_spacing > 0
   double seconds = 0.0;
 };
 

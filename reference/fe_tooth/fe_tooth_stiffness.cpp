@@ -63,6 +63,12 @@ void FeToothOptions::validate() const {
     throw InputError(fmt::format("mesh.near_size_modules = {}: must lie in (0.01, 1]", near_size_modules));
   if (!(far_size_modules >= near_size_modules && far_size_modules <= 5.0))
     throw InputError(fmt::format("mesh.far_size_modules = {}: must lie in [near_size_modules, 5]", far_size_modules));
+  if (crack) {
+    if (crack->gear < 0 || crack->gear > 1)
+      throw InputError(fmt::format("crack.gear = {}: must be 1 or 2", crack->gear + 1));
+    if (!(crack->length >= 0.0))
+      throw InputError(fmt::format("crack.length_mm = {}: must be ≥ 0", crack->length * 1e3));
+  }
   fe.validate();
 }
 
@@ -90,11 +96,33 @@ FeToothStiffness::FeToothStiffness(const model::GearPair& pair, const std::array
     sizes.growth = 0.2;
     sizes.focus = {0.5 * (teeth_[i].radii.root + teeth_[i].radii.tip), 0.0};
     meshes_[i] = mesh_gear(teeth_[i], bore_[i], sizes);
+    if (options_.crack && options_.crack->gear == g && options_.crack->length > 0.0) {
+      slits_[i] = pitch_crack_slit(teeth_[i], *options_.crack);
+      slit_meshes_[i] = mesh_gear(teeth_[i], bore_[i], sizes, slits_[i]);
+    }
     outline_[i] = local_outline(teeth_[i]);
   }
 }
 
-ToothCompliance FeToothStiffness::tooth_compliance(int gear, double s, bool vtu) const {
+// The slit's added compliance is taken from the work of the load, Δ(f·u)/F²: by Clapeyron's
+// theorem it is exactly twice the strain energy the cut adds per unit force squared — the
+// quantity the energy method's cracked sections change — and it does not depend on where a
+// probe sits (a probe near the slit sees one lip only; a load below the mouth leaves the
+// probe on the shielded side, where it even moves less). The probe compliance of the
+// healthy tooth keeps the meaning of the uncracked figures.
+ToothCompliance FeToothStiffness::tooth_compliance(int gear, double s, bool vtu, double field_spacing,
+                                                   const ToothCompliance* healthy) const {
+  if (!slits_[static_cast<std::size_t>(gear)]) return solve_tooth(gear, s, vtu, field_spacing, false);
+  const ToothCompliance h = healthy ? *healthy : solve_tooth(gear, s, false, 0.0, false);
+  ToothCompliance c = solve_tooth(gear, s, vtu, field_spacing, true);
+  c.probe_compliance = c.compliance;
+  c.crack_compliance = c.contact_compliance - h.contact_compliance;
+  c.compliance = h.compliance + c.crack_compliance;
+  c.seconds += healthy ? 0.0 : h.seconds;
+  return c;
+}
+
+ToothCompliance FeToothStiffness::solve_tooth(int gear, double s, bool vtu, double field_spacing, bool with_slit) const {
   const auto i = static_cast<std::size_t>(gear);
   const auto& t = teeth_[i];
   const double roll = (gear == 0 ? s : path_.t1t2 - s) / t.radii.base;
@@ -113,11 +141,17 @@ ToothCompliance FeToothStiffness::tooth_compliance(int gear, double s, bool vtu)
   const double b = c.hertz_half_width, near = options_.near_size_modules * pair_.normal_module;
   const double bore = bore_[i], zone = 1.5 * 2 * pi / t.teeth, root = t.radii.root;
   ElasticProblem p;
-  p.mesh = meshes_[i];
+  p.mesh = with_slit ? slit_meshes_[i] : meshes_[i];
+  p.converge_on_load = with_slit;
   p.material = {materials_[i].youngs_modulus, materials_[i].poisson_ratio, options_.plane_strain};
   p.clamped = [bore](const Vec2& x) { return std::hypot(x[0], x[1]) < bore * (1 + 1e-3); };
-  p.loaded = [P, d, b, near](const Vec2& x, const Vec2& n) {
-    return distance(x, P) < b + 2 * near && n[0] * d[0] + n[1] * d[1] < 0.0;
+  // The slit's faces are free boundary: neither loaded nor on the curved outline (their
+  // midpoints lie on the slit's segment, up to rounding).
+  const auto slit = with_slit ? slits_[i] : std::nullopt;
+  const double on_slit = 1e-6 * pair_.normal_module;
+  auto off_slit = [slit, on_slit](const Vec2& x) { return !slit || distance_to_slit(*slit, x) > on_slit; };
+  p.loaded = [P, d, b, near, off_slit](const Vec2& x, const Vec2& n) {
+    return distance(x, P) < b + 2 * near && n[0] * d[0] + n[1] * d[1] < 0.0 && off_slit(x);
   };
   // Hertz's elliptical pressure p0·√(1 − (r/b)²) (Johnson 1985, eq. 4.44), along the flank.
   p.intensity = [P, b](const Vec2& x) {
@@ -132,19 +166,28 @@ ToothCompliance FeToothStiffness::tooth_compliance(int gear, double s, bool vtu)
   if (options_.rigid_body)
     p.stiffness_factor = [root](const Vec2& x) { return std::hypot(x[0], x[1]) < root ? 1e3 : 1.0; };
   const auto* line = &outline_[i];
-  p.on_outline = [root, zone](const Vec2& x) {
-    return std::hypot(x[0], x[1]) > 0.99 * root && std::abs(std::atan2(x[1], x[0])) < zone;
+  p.on_outline = [root, zone, off_slit](const Vec2& x) {
+    return std::hypot(x[0], x[1]) > 0.99 * root && std::abs(std::atan2(x[1], x[0])) < zone && off_slit(x);
   };
   p.project = [line](const Vec2& x) { return project_onto(*line, x); };
   // Probe: where the load line crosses the tooth centre line (y = 0).
   c.probe = {P[0] - P[1] / d[1] * d[0], 0.0};
   p.probe = c.probe;
+  c.cracked = slit.has_value();
+  if (slit) c.probe_to_crack = distance_to_slit(*slit, c.probe);
   p.probe_direction = d;
+  // Sampling window: the loaded tooth from 1.5 modules under the root circle to the tip,
+  // and half a tooth space either side.
+  const double m = pair_.normal_module;
+  p.field_lower = {root - 1.5 * m, -0.5 * t.radii.tip * 2 * pi / t.teeth};
+  p.field_upper = {t.radii.tip, 0.5 * t.radii.tip * 2 * pi / t.teeth};
+  p.field_spacing = field_spacing;
   auto fe_options = options_.fe;
   fe_options.vtu = vtu;
   c.fe = solve_elastic(p, fe_options);
   c.compliance = c.fe.value / (options_.load_per_width * pair_.face_width);
   c.contact_compliance = c.fe.cycles.back().load_displacement / (options_.load_per_width * pair_.face_width);
+  c.seconds = c.fe.seconds;
   return c;
 }
 

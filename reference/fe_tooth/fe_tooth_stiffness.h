@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "crack_slit.h"
 #include "elasticity.h"
 #include "model/gear_pair.h"
 #include "model/materials.h"
@@ -27,19 +28,28 @@ struct FeToothOptions {
   /// Diagnostic: the body inside the root circle 1000× stiffer, so that the probe sees the
   /// tooth alone (the energy method's bending + shear + axial, without the foundation).
   bool rigid_body = false;
+  /// A crack in one gear's loaded tooth, meshed as a slit (docs/fe-tooth-model.md, "Cracks").
+  std::optional<ToothCrack> crack;
   void validate() const;              ///< InputError naming the key
 };
 
-/// One gear's tooth at one mesh position.
+/// One gear's tooth at one mesh position. A cracked tooth is solved twice, healthy and with
+/// the slit: its compliance is the healthy probe compliance plus the slit's added
+/// work-conjugate compliance (docs/fe-tooth-model.md, "Cracks").
 struct ToothCompliance {
   double compliance = 0.0;       ///< [m/N] for the whole face width (probe on the load line)
+  double crack_compliance = 0.0; ///< added by the slit, Δ(f·u)/F² [m/N] (0 if uncracked)
+  double probe_compliance = 0.0; ///< the probe on the slit mesh itself [m/N] (diagnostic)
+  double seconds = 0.0;          ///< all solves of this tooth
   /// Work-conjugate compliance of the loaded patch [m/N]: the tooth compliance plus the
   /// local indentation under the Hertzian pressure of half-width b (not added to Hertz).
   double contact_compliance = 0.0;
   double load_radius = 0.0;      ///< radius of the contact point [m]
   double hertz_half_width = 0.0; ///< [m]
   Vec2 load_point{}, probe{};    ///< tooth coordinates [m]
-  ElasticResult fe;
+  bool cracked = false;          ///< this tooth carries the slit
+  double probe_to_crack = 0.0;   ///< distance of the probe from the slit [m] (0 if uncracked)
+  ElasticResult fe;              ///< the slit solve if cracked
 };
 
 struct FePosition {
@@ -69,8 +79,12 @@ class FeToothStiffness {
   FeToothStiffness(const model::GearPair& pair, const std::array<model::Material, 2>& materials,
                    FeToothOptions options);
 
-  /// Compliance of gear `gear`'s tooth with the contact at path position s (from T1).
-  [[nodiscard]] ToothCompliance tooth_compliance(int gear, double s, bool vtu = false) const;
+  /// Compliance of gear `gear`'s tooth with the contact at path position s (from T1); with
+  /// field_spacing > 0 [m] the solution is also sampled over the loaded tooth (fe.field).
+  /// `healthy`: this tooth's uncracked result at s if already solved (a crack-length sweep),
+  /// which spares the cracked tooth its healthy companion solve.
+  [[nodiscard]] ToothCompliance tooth_compliance(int gear, double s, bool vtu = false, double field_spacing = 0.0,
+                                                 const ToothCompliance* healthy = nullptr) const;
   /// Both teeth and the pair at s.
   [[nodiscard]] FePosition at(double s, bool vtu = false) const;
   /// The given positions (s from T1 [m]).
@@ -78,6 +92,8 @@ class FeToothStiffness {
 
   [[nodiscard]] const ContactPath& path() const { return path_; }
   [[nodiscard]] const ToothOutline& tooth(int gear) const { return teeth_[static_cast<std::size_t>(gear)]; }
+  /// The slit of the cracked gear's loaded tooth (tooth coordinates), if any.
+  [[nodiscard]] const std::optional<Slit>& slit(int gear) const { return slits_[static_cast<std::size_t>(gear)]; }
 
  private:
   model::GearPair pair_;
@@ -87,6 +103,10 @@ class FeToothStiffness {
   std::array<ToothOutline, 2> teeth_;
   std::array<double, 2> bore_{};
   std::array<QuadMesh, 2> meshes_;
+  std::array<std::optional<Slit>, 2> slits_;
+  std::array<QuadMesh, 2> slit_meshes_;  ///< the cracked gear's mesh with the slit
+
+  [[nodiscard]] ToothCompliance solve_tooth(int gear, double s, bool vtu, double field_spacing, bool with_slit) const;
   std::array<std::vector<Vec2>, 2> outline_;  ///< dense outline of the loaded tooth ± 1
 };
 

@@ -29,8 +29,10 @@ std::vector<std::size_t> control_indices(const ToothOutline& t) {
 }
 
 /// The outer curve loop: for each tooth, lower flank root → tip, tip arc, upper flank
-/// tip → root; the root point is shared with the next tooth. Returns gmsh curve tags.
-std::vector<int> add_outline(const ToothOutline& t, int centre) {
+/// tip → root; the root point is shared with the next tooth. With a slit, tooth 0's upper
+/// flank is split at the crack mouth (control points closer to it than a third of the
+/// control spacing are dropped), whose gmsh point tag goes to `mouth`. Returns curve tags.
+std::vector<int> add_outline(const ToothOutline& t, int centre, const std::optional<Slit>& slit, int& mouth) {
   namespace geo = gmsh::model::geo;
   const auto idx = control_indices(t);
   std::vector<int> curves;
@@ -51,18 +53,30 @@ std::vector<int> add_outline(const ToothOutline& t, int centre) {
       lower.push_back(point({p[0], -p[1]}));
     }
     if (first_root < 0) first_root = lower.front();
-    std::vector<int> upper;
+    std::vector<std::vector<int>> upper(1);
     for (std::size_t n = idx.size(); n-- > 0;) {
       if (n == 0 && k == t.teeth - 1) {
-        upper.push_back(first_root);
+        upper.back().push_back(first_root);
         continue;
       }
-      upper.push_back(point(t.flank[idx[n]]));
+      const auto& p = t.flank[idx[n]];
+      if (k == 0 && slit) {
+        const auto& below = t.flank[n > 0 ? idx[n - 1] : 0];
+        const double gap = std::hypot(p[0] - slit->mouth[0], p[1] - slit->mouth[1]);
+        const double spacing = std::hypot(p[0] - below[0], p[1] - below[1]);
+        if (mouth < 0 && idx[n] < slit->flank_index) {  // passed the mouth, going down
+          mouth = point(slit->mouth);
+          upper.back().push_back(mouth);
+          upper.push_back({mouth});
+        }
+        if (gap < spacing / 3) continue;
+      }
+      upper.back().push_back(point(p));
     }
     curves.push_back(geo::addSpline(lower));
-    curves.push_back(geo::addCircleArc(lower.back(), centre, upper.front()));
-    curves.push_back(geo::addSpline(upper));
-    previous_root = upper.back();
+    curves.push_back(geo::addCircleArc(lower.back(), centre, upper.front().front()));
+    for (const auto& part : upper) curves.push_back(geo::addSpline(part));
+    previous_root = upper.back().back();
   }
   return curves;
 }
@@ -90,6 +104,28 @@ void set_size_field(const GearMeshSizes& s) {
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
 }
 
+/// Embeds the slit from the mouth (a point of the outline) to its tip and lets gmsh's
+/// Plugin(Crack) duplicate the slit's nodes after meshing (gmsh reference manual, "Gmsh
+/// plugins": Crack): `OpenBoundaryPhysicalGroup` is the mouth, so the crack opens there;
+/// the tip stays shared. Returns the physical group tags {slit, mouth}.
+std::array<int, 2> embed_slit(const Slit& slit, int mouth, int surface) {
+  const int tip = gmsh::model::geo::addPoint(slit.tip[0], slit.tip[1], 0.0);
+  const int line = gmsh::model::geo::addLine(mouth, tip);
+  gmsh::model::geo::synchronize();
+  gmsh::model::mesh::embed(1, {line}, 2, surface);
+  return {gmsh::model::addPhysicalGroup(1, {line}), gmsh::model::addPhysicalGroup(0, {mouth})};
+}
+
+void open_slit(const std::array<int, 2>& groups) {
+  gmsh::plugin::setNumber("Crack", "Dimension", 1);
+  gmsh::plugin::setNumber("Crack", "PhysicalGroup", groups[0]);
+  gmsh::plugin::setNumber("Crack", "OpenBoundaryPhysicalGroup", groups[1]);
+  gmsh::plugin::setNumber("Crack", "NormalX", 0);
+  gmsh::plugin::setNumber("Crack", "NormalY", 0);
+  gmsh::plugin::setNumber("Crack", "NormalZ", 1);
+  gmsh::plugin::run("Crack");
+}
+
 QuadMesh extract_quads() {
   std::vector<std::size_t> node_tags;
   std::vector<double> coords, params;
@@ -112,7 +148,8 @@ QuadMesh extract_quads() {
 
 }  // namespace
 
-QuadMesh mesh_gear(const ToothOutline& tooth, double bore_radius, const GearMeshSizes& sizes) {
+QuadMesh mesh_gear(const ToothOutline& tooth, double bore_radius, const GearMeshSizes& sizes,
+                   const std::optional<Slit>& slit) {
   if (!(bore_radius > 0.0 && bore_radius < tooth.radii.root))
     throw InputError(fmt::format("bore_diameter_mm = {}: must lie in (0, {}) (the root diameter)",
                                  2e3 * bore_radius, 2e3 * tooth.radii.root));
@@ -127,16 +164,20 @@ QuadMesh mesh_gear(const ToothOutline& tooth, double bore_radius, const GearMesh
   try {
     gmsh::model::add("gear");
     const int centre = gmsh::model::geo::addPoint(0.0, 0.0, 0.0);
-    const int outer = gmsh::model::geo::addCurveLoop(add_outline(tooth, centre));
+    int mouth = -1;
+    const int outer = gmsh::model::geo::addCurveLoop(add_outline(tooth, centre, slit, mouth));
     const int inner = gmsh::model::geo::addCurveLoop(add_bore(bore_radius, centre));
-    gmsh::model::geo::addPlaneSurface({outer, inner});
+    const int surface = gmsh::model::geo::addPlaneSurface({outer, inner});
     gmsh::model::geo::synchronize();
+    std::array<int, 2> groups{};
+    if (slit) groups = embed_slit(*slit, mouth, surface);
     set_size_field(sizes);
     gmsh::option::setNumber("Mesh.Algorithm", 6);             // frontal-Delaunay
     // Triangles split into three quadrilaterals each (gmsh's subdivision): all quads without
     // the blossom recombination, which leaks memory in gmsh 4.8 (LeakSanitizer, 112 bytes).
     gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 1);
     gmsh::model::mesh::generate(2);
+    if (slit) open_slit(groups);
     mesh = extract_quads();
   } catch (...) {
     gmsh::finalize();
