@@ -209,6 +209,9 @@ Herringbone12Dynamics::HalfState Herringbone12Dynamics::half_state(int h, double
     s.mesh.chi_wheel = arms[1];
   }
   s.impact = impact_force(h, t, t_mid);
+  // With contact loss the pulse needs the working flanks in contact: the entering pair meets
+  // early only by the loaded deflection (docs, "Contact loss").
+  if (options_.backlash && !(s.delta > 0.0)) s.impact = 0.0;
   return s;
 }
 
