@@ -12,6 +12,7 @@
 
 #include "checks/dynamics_reference.h"
 #include "dynamics/pair_friction.h"
+#include "efficiency/mesh_loss.h"
 #include "support/test_support.h"
 
 namespace gearbench {
@@ -54,6 +55,33 @@ TEST(DynamicsFriction, ReferenceBenedictKelleyMatchesTheProductionLaw) {
               largest, worst);
   EXPECT_LT(worst, 2e-6);
   EXPECT_LT(smallest, largest);  // the law is not a constant along the path
+}
+
+// ISO/TR 14179-2 is a mean coefficient of the pair (the efficiency solver's, at its nominal
+// load): the same μ at every contact and load. The mixed law blends the full-film
+// Xu–Kahraman coefficient with μ_BL by the fluid share of the film: it lies between them.
+TEST(DynamicsFriction, IsoIsTheMeanCoefficientAndMixedLiesBetweenItsLaws) {
+  const geometry::GearPairGeometry g(testing_support::seed003_pair());
+  auto with = [&](lubricant::FrictionModel model) {
+    dynamics::FrictionLawOptions law;
+    law.model = model;
+    law.lubricant = oil;
+    return dynamics::PairFriction(g, steel, seed003_operating, 0.06, law);
+  };
+  efficiency::MeshLossOptions iso_options;
+  iso_options.friction_model = lubricant::FrictionModel::iso14179;
+  const double iso_mu =
+      efficiency::MeshLoss(g, seed003_operating, iso_options, {steel, oil}).iso14179_coefficient();
+  const auto iso = with(lubricant::FrictionModel::iso14179), mixed = with(lubricant::FrictionModel::mixed),
+             full_film = with(lubricant::FrictionModel::xu_kahraman);
+  const auto& path = g.path();
+  for (const double s : {path.A, 0.5 * (path.A + path.C), 0.5 * (path.C + path.E), path.E})
+    for (const double w : {1e3, 1e5, 1e6}) {
+      EXPECT_EQ(iso.coefficient(s, w), iso_mu);
+      const double lo = std::min(full_film.coefficient(s, w), 0.1), hi = std::max(full_film.coefficient(s, w), 0.1);
+      EXPECT_GE(mixed.coefficient(s, w), lo);
+      EXPECT_LE(mixed.coefficient(s, w), hi);
+    }
 }
 
 // The seed 003 pair under its 50 N·m: the static deflection (~25 µm) dwarfs the dynamic

@@ -84,7 +84,7 @@ void HalfMesh::Sums::add(double k_pair, double s, double lambda, const geometry:
   k_rho2 += k_pair * lambda * (path.T2 - s) * factor;
 }
 
-HalfMesh::Sums HalfMesh::loaded_sums(const std::vector<Contact>& contacts, double force, double length) const {
+HalfMesh::Sums HalfMesh::loaded_sums(std::span<const Contact> contacts, double force, double length) const {
   double total = 0.0;
   for (const Contact& c : contacts) total += c.k;
   Sums sums;
@@ -222,20 +222,21 @@ MeshPoint HalfMesh::spur_point(double t, double t_mid, double force) const {
   const double pb = geometry_.base_pitch_transverse();
   const double n = std::floor(speed_ * t_mid / pb);
   auto k_at = [&](double s) { return (*pair_curve_)(std::clamp(s, path.A, path.E)); };
-  std::vector<Contact> contacts;
+  std::array<Contact, 3> contacts{};
+  std::size_t count = 0;
   double rate = 0.0;
   for (int j = 0; j < 3; ++j) {
     const double s_mid = path.A + speed_ * t_mid - n * pb + j * pb;
     if (s_mid < path.A || s_mid > path.E) continue;
     const double s = std::clamp(path.A + speed_ * t - n * pb + j * pb, path.A, path.E);
     // λ of the whole interval: intervals end where a pair passes C.
-    contacts.push_back({s, k_at(s), sliding_sign(s_mid, path)});
+    contacts[count++] = {s, k_at(s), sliding_sign(s_mid, path)};
     // dk/dt = u·dk/ds by a central difference on the spline, one-sided at the path's ends.
     const double h = 1e-6 * (path.E - path.A);
     const double lo = std::max(path.A, s - h), hi = std::min(path.E, s + h);
     rate += speed_ * (k_at(hi) - k_at(lo)) / (hi - lo);
   }
-  const Sums sums = loaded_sums(contacts, force, geometry_.pair().face_width);
+  const Sums sums = loaded_sums(std::span(contacts.data(), count), force, geometry_.pair().face_width);
   const double mu = friction_.scale();
   return {sums.k, rate, sums.k > 0.0 ? mu * sums.k_rho1 / sums.k : 0.0, sums.k > 0.0 ? mu * sums.k_rho2 / sums.k : 0.0};
 }

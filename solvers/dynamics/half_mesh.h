@@ -18,6 +18,7 @@
 // at the top level beyond 3·F_nom).
 #include <array>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "geometry/gear_pair_geometry.h"
@@ -100,7 +101,7 @@ class HalfMesh {
   };
   [[nodiscard]] std::vector<Contact> helical_contacts(double s0) const;
   /// Σ over the contacts with μ_c of the law at the share F·k_c/Σk of `force` over `length` each.
-  [[nodiscard]] Sums loaded_sums(const std::vector<Contact>& contacts, double force, double length) const;
+  [[nodiscard]] Sums loaded_sums(std::span<const Contact> contacts, double force, double length) const;
   [[nodiscard]] MeshPoint spur_point(double t, double t_mid, double force) const;
   void build_tables(const std::array<model::Material, 2>& materials);
   void build_load_levels();
