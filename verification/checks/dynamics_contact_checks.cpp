@@ -6,7 +6,9 @@
 // unless contact may be lost.
 #include <algorithm>
 #include <cmath>
+#include <fmt/format.h>
 #include <numbers>
+#include <string>
 
 #include "check_registry.h"
 #include "dynamics_case.h"
@@ -174,6 +176,44 @@ const RegisterCheck friction_law_energy(CheckSpec{
       return CheckValue{std::abs(e.residual), 0.0,
                         {{"friction_J", e.friction}, {"damping_J", e.damping}, {"input_J", e.input},
                          {"friction_rms_N", r.friction.rms}}};
+    }});
+
+// The light-load resonance with and without contact loss (figure), and the friction of the
+// seed 003 case under each law (note).
+const RegisterSection contact_section(SectionSpec{
+    .id = "dynamics_contact_loss", .tier = Tier::fast, .add = [](const CheckContext& ctx, reports::Report& report) {
+      auto c = seed003(ctx);
+      auto o = light_load_resonance(c);
+      o.record_cycles = 4;
+      const geometry::GearPairGeometry g(c.pair);
+      const auto lossy = Spur6Dynamics(g, c.materials, c.operating, o).solve();
+      o.backlash.reset();
+      const auto linear = Spur6Dynamics(g, c.materials, c.operating, o).solve();
+      report.figures.push_back({"dynamics_contact_loss_force", spur_section,
+                                "Seed 003 pair at 6800 rpm under 5 N·m (ζ_m 0.02): mesh force over 4 mesh cycles",
+                                "time [s]", "F_m [N]",
+                                {{"linear mesh", linear.time, linear.mesh_force},
+                                 {"50 µm backlash (contact loss)", lossy.time, lossy.mesh_force}}});
+      const auto base = seed003(ctx);
+      std::string laws;
+      for (const auto model : {lubricant::FrictionModel::constant, lubricant::FrictionModel::benedict_kelley,
+                               lubricant::FrictionModel::xu_kahraman, lubricant::FrictionModel::mixed}) {
+        Spur6Options f;
+        f.friction_law = law(model);
+        f.record_cycles = 4;
+        const auto r = Spur6Dynamics(g, base.materials, base.operating, f).solve();
+        laws += fmt::format("{}{}: friction force rms {:.1f} N, dissipation {:.3f} J", laws.empty() ? "" : "; ",
+                            lubricant::friction_model_name(model), r.friction.rms, r.energy.friction);
+      }
+      report.notes.push_back({spur_section, fmt::format(
+          "Contact loss (docs/dynamics-model.md): the seed 003 pair at a resonance under a tenth of its load "
+          "(5 N·m, 6800 rpm, ζ_m = 0.02, 50 µm backlash) parts its flanks {:.1f} % of the time ({} roots of the "
+          "contact functions over 64 cycles); the linear mesh pulls there with down to {:.0f} N. Dynamic factor "
+          "{:.3f} with contact loss against {:.3f} linear. Friction laws at the seed 003 operating point (50 N·m, "
+          "996 rpm, the seed 000 oil, Ra 0.4 µm; 4 steady cycles) against μ = 0.06: {}.",
+          100 * lossy.contact_loss_fraction, lossy.contact_events,
+          *std::min_element(linear.mesh_force.begin(), linear.mesh_force.end()), lossy.dynamic_factor,
+          linear.dynamic_factor, laws)});
     }});
 
 // --- 12-DOF herringbone ------------------------------------------------------------------
