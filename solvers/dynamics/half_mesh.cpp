@@ -114,6 +114,9 @@ HalfMesh::HalfMesh(const geometry::GearPairGeometry& geometry, const std::array<
   period_ = geometry_.base_pitch_transverse() / speed_;
   const double halves = geometry_.pair().herringbone ? 2.0 : 1.0;
   nominal_force_ = operating.pinion_torque / halves / (geometry_.radii(0).base * std::cos(geometry_.base_helix_angle()));
+  if (load_dependent_friction() && !(nominal_force_ > 0.0))
+    throw InputError(fmt::format("operating.pinion_torque_Nm = {}: friction.model = {} needs a load > 0",
+                                 operating.pinion_torque, lubricant::friction_model_name(options_.friction_law.model)));
   if (geometry_.base_helix_angle() > 0.0) {
     build_tables(materials);
   } else {
@@ -188,10 +191,9 @@ void HalfMesh::build_load_levels() {
   for (std::size_t i = 0; i < n; ++i)
     contacts.push_back(helical_contacts(path.A + pb * static_cast<double>(i) / static_cast<double>(n)));
   for (int l = 0; l <= load_levels; ++l) {
-    level_force_.push_back(nominal_force_ * l / 4.0);
     std::vector<double> chi_p(n), chi_g(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const Sums sums = loaded_sums(contacts[i], level_force_.back(), line);
+      const Sums sums = loaded_sums(contacts[i], nominal_force_ * l / 4.0, line);
       chi_p[i] = sums.k_rho1 / sums.k;
       chi_g[i] = sums.k_rho2 / sums.k;
     }

@@ -115,8 +115,7 @@ class HalfMesh {
   std::optional<FourierSeries> k_, chi_p_, chi_g_;
   PairFriction friction_;
   double nominal_force_ = 0.0;  ///< F_nom = T_p/(R_p·cos β_b) per half [N]
-  std::vector<double> level_force_;  ///< F_l of the helical load levels [N]
-  std::vector<FourierSeries> chi_p_levels_, chi_g_levels_;
+  std::vector<FourierSeries> chi_p_levels_, chi_g_levels_;  ///< arms at F_l = (l/4)·F_nom, l = 0..12
   MeshPoint mean_;
   double consistency_ = 0.0, truncation_ = 0.0;
 };

@@ -264,7 +264,8 @@ void Herringbone12Dynamics::derivative(double t, double t_mid, const double* y, 
   dydt[work + 3] = impact;
 }
 
-// E = ½Σm·q̇² + ½Σ I(Ω + θ̇)² + ½Σ k·q² (bearings, groove) + ½Σ_h k_h(t)·δ_h².
+// E = ½Σm·q̇² + ½Σ I(Ω + θ̇)² + ½Σ k·q² (bearings, groove) + ½Σ_h k_h(t)·p_h² (p_h = δ_h
+// without contact loss).
 double Herringbone12Dynamics::energy(double t, double t_mid, const double* y) const {
   double e = 0.0;
   for (int h = 0; h < 2; ++h) {

@@ -108,9 +108,9 @@ Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
     for (const double t : positions) k_sum += pair_stiffness(t);
     for (const double t : positions) {
       const double kj = pair_stiffness(t), lambda = t > p_.C ? 1.0 : (t < p_.C ? -1.0 : 0.0);
-      const double share = friction_.factor(t, p_.T1 / p_.rb1 * kj / k_sum / p_.face_width);
-      k1 += kj * lambda * t * share;
-      k2 += kj * lambda * (p_.T1T2 - t) * share;
+      const double mu_factor = friction_.factor(t, p_.T1 / p_.rb1 * kj / k_sum / p_.face_width);
+      k1 += kj * lambda * t * mu_factor;
+      k2 += kj * lambda * (p_.T1T2 - t) * mu_factor;
     }
     arm1 += friction_.scale() * k1 / k_sum / samples;
     arm2 += friction_.scale() * k2 / k_sum / samples;
@@ -204,7 +204,7 @@ void Spur6Dynamics::derivative(double t, double t_mid, const double* y, double* 
   dydt[14] = 0.5 * m.stiffness_rate * m.penetration * m.penetration;
 }
 
-// E = ½Σm·q̇² + ½Σ I·(Ω + θ̇)² + ½k_b·Σq² + ½Σk_j·δ².
+// E = ½Σm·q̇² + ½Σ I·(Ω + θ̇)² + ½k_b·Σq² + ½Σk_j·p² (p = δ without contact loss).
 double Spur6Dynamics::energy(double t, double t_mid, const double* y) const {
   const double w1 = p_.contact_speed / p_.rb1, w2 = w1 * p_.rb1 / p_.rb2;
   const MeshState m = mesh(t, t_mid, y);
