@@ -1,6 +1,7 @@
 // Tests of the friction laws and the contact loss inside the dynamics models
 // (docs/dynamics-model.md, "Friction laws" and "Contact loss"): the reference's own
-// Benedict–Kelley against the production law, a heavily loaded pair whose contact is never
+// Benedict–Kelley against the production law, the ISO and mixed laws, the helical arms'
+// interpolation between load levels, a heavily loaded pair whose contact is never
 // lost (no root fires, the result is the linear model's bit for bit), and the herringbone
 // pair whose mesh-in impact pulls its mesh force below zero unless contact may be lost.
 #include <gtest/gtest.h>
@@ -82,6 +83,46 @@ TEST(DynamicsFriction, IsoIsTheMeanCoefficientAndMixedLiesBetweenItsLaws) {
       EXPECT_GE(mixed.coefficient(s, w), lo);
       EXPECT_LE(mixed.coefficient(s, w), hi);
     }
+}
+
+// The helical arms under a friction law are interpolated linearly between the load levels
+// (l/4)·F_nom. A second half mesh whose nominal force is 1.125·F_nom has a table at exactly
+// that force (its level 4): against it the interpolation midway between levels 4 and 5 of the
+// first shows its error. For μ ∝ w^0.52 (Xu–Kahraman: P_h^1.03 with P_h ∝ √w) the midpoint
+// error of linear interpolation on [1, 1.25] is 1.6e-3 of the value; twice that, 3e-3 of the
+// largest arm, leaves room for the law's exponential terms in P_h.
+TEST(DynamicsFriction, HelicalArmsInterpolateBetweenLoadLevels) {
+  model::GearPair pair;
+  pair.teeth = {17, 44};
+  pair.normal_module = 6e-3;
+  pair.normal_pressure_angle = 18.334317 * std::numbers::pi / 180.0;
+  pair.helix_angle = 24.43 * std::numbers::pi / 180.0;
+  pair.face_width = 55e-3;
+  pair.herringbone = model::Herringbone{58e-3};
+  const geometry::GearPairGeometry g(pair);
+  const std::array<model::Material, 2> s0{model::Material{206e9, 0.3, 7850}, model::Material{206e9, 0.3, 7850}};
+  dynamics::HalfMeshOptions o;
+  o.slices = 40;
+  o.positions = 180;
+  o.friction_law.model = lubricant::FrictionModel::xu_kahraman;
+  o.friction_law.lubricant = oil;
+  model::OperatingPoint operating{2000.0 * std::numbers::pi / 30.0, 309.09, 313.15, {0.4e-6, 0.4e-6}};
+  const double nominal = operating.pinion_torque / 2.0 / (g.radii(0).base * std::cos(g.base_helix_angle()));
+  const dynamics::HalfMesh coarse(g, s0, operating, o);
+  operating.pinion_torque *= 1.125;
+  const dynamics::HalfMesh exact(g, s0, operating, o);
+  const double force = 1.125 * nominal;  // midway between levels 4 and 5 of `coarse`, level 4 of `exact`
+  double worst = 0.0, largest = 0.0;
+  for (int i = 0; i < 100; ++i) {
+    const double t = coarse.period() * i / 100.0;
+    const auto a = coarse.arms(t, t, force), b = exact.arms(t, t, force);
+    worst = std::max({worst, std::abs(a[0] - b[0]), std::abs(a[1] - b[1])});
+    largest = std::max({largest, std::abs(b[0]), std::abs(b[1])});
+  }
+  std::printf("[ measured ] arms midway between load levels: largest deviation %.2e of the largest arm %.3e m\n",
+              worst / largest, largest);
+  EXPECT_GT(largest, 0.0);
+  EXPECT_LT(worst / largest, 3e-3);
 }
 
 // The seed 003 pair under its 50 N·m: the static deflection (~25 µm) dwarfs the dynamic
