@@ -428,6 +428,33 @@ TEST(Cli, DynamicsRunsAndValidates) {
   }
 }
 
+// The dynamics kind reads the efficiency kind's friction section and the backlash.
+TEST(Cli, DynamicsTakesAFrictionLawAndBacklash) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics_friction_backlash.json");
+  auto j = json::parse(in);
+  j["runup_cycles"] = 40;
+  j["record_cycles"] = 4;
+  const auto o = run_gearbench("run " + write_case("dynamics_law_backlash", j.dump()));
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  EXPECT_EQ(r["friction_model"], "xu_kahraman");
+  EXPECT_GT(r["contact_loss"]["separation_fraction"].get<double>(), 0.0);
+  const std::pair<std::function<void(json&)>, std::string> bad[] = {
+      {[](json& c) { c.erase("lubricant"); }, "lubricant: missing, needed for friction.model = xu_kahraman"},
+      {[](json& c) { c["friction"]["mu"] = 0.05; }, "friction.mu = 0.05: applies to friction.model = constant only"},
+      {[](json& c) { c["friction"]["model"] = "ehl"; }, "friction.model = \"ehl\""},
+      {[](json& c) { c["backlash_um"] = 0; }, "backlash_um = 0"},
+  };
+  int n = 0;
+  for (const auto& [edit, expected] : bad) {
+    auto c = j;
+    edit(c);
+    const auto e = run_gearbench("run " + write_case("dynamics_law_bad_" + std::to_string(n++), c.dump()));
+    EXPECT_EQ(e.exit_code, 2) << e.err;
+    EXPECT_NE(e.err.find(expected), std::string::npos) << e.err;
+  }
+}
+
 TEST(Cli, HerringboneDynamicsRunsSweepsAndValidates) {
   std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed000_herringbone_dynamics.json");
   auto j = json::parse(in);

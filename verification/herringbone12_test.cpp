@@ -9,8 +9,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "dynamics/herringbone12_dynamics.h"
-#include "ode/herringbone12_rk4.h"
+#include "checks/dynamics_reference.h"
 #include "support/test_support.h"
 
 namespace gearbench {
@@ -41,17 +40,7 @@ dynamics::Herringbone12Options fast_options() {
   return o;
 }
 
-reference::Herringbone12Parameters reference_of(const dynamics::Herringbone12Dynamics& d) {
-  const auto& p = d.parameters();
-  const auto& mesh = d.mesh();
-  return {p.m_p, p.m_g, p.I_p, p.I_g, p.R_p, p.R_g, p.beta_b, p.k_radial, p.c_radial, p.k_axial_p, p.c_axial_p,
-          p.k_axial_g, p.c_axial_g, p.k_groove, p.c_groove, p.k_twist, p.c_twist, p.T_p, p.T_g,
-          p.mean_mesh_stiffness, p.mesh_damping, p.impact_force, p.impact_duration, p.period, p.clock_offset,
-          [&mesh](double tau) {
-            const auto m = mesh.at(tau, tau);
-            return reference::HalfMeshValue{m.stiffness, m.chi_pinion, m.chi_wheel};
-          }};
-}
+using verification::herringbone_reference;
 
 TEST(Herringbone12, RejectsBadInputNamingTheKey) {
   const geometry::GearPairGeometry herringbone(seed000_pair());
@@ -82,7 +71,7 @@ TEST(Herringbone12, StaticStateIsAnEquilibriumOfTheReferenceEquations) {
   auto o = fast_options();
   o.mesh_in_impact = false;
   const dynamics::Herringbone12Dynamics d(g, steel, seed000_operating, o);
-  auto p = reference_of(d);
+  auto p = herringbone_reference(d);
   const auto mean = d.mesh().mean();
   p.mesh = [mean](double) { return reference::HalfMeshValue{mean.stiffness, mean.chi_pinion, mean.chi_wheel}; };
   reference::Herringbone12State y{};
@@ -106,7 +95,7 @@ TEST(Herringbone12, StaticStateIsAnEquilibriumOfTheReferenceEquations) {
 TEST(Herringbone12, ReferenceRk4HasOrderFourAcrossImpactPulses) {
   const geometry::GearPairGeometry g(seed000_pair());
   const dynamics::Herringbone12Dynamics d(g, steel, seed000_operating, fast_options());
-  const auto p = reference_of(d);
+  const auto p = herringbone_reference(d);
   reference::Herringbone12State y0{};
   const auto s = d.static_state();
   std::copy(s.begin(), s.begin() + 24, y0.begin());

@@ -40,7 +40,28 @@ std::optional<bool> optional_bool(model::ObjectReader& reader, const json& objec
   return object.at(key).get<bool>();
 }
 
-dynamics::Spur6Options read_options(model::ObjectReader& root) {
+/// The keys both models read alike: mesh damping, friction (the efficiency kind's section),
+/// backlash, run length and integrator. `mu` and `law` are where the model keeps its friction.
+template <class Options>
+void read_common_options(model::ObjectReader& root, const model::GearCase& c, Options& o, double& mu,
+                         dynamics::FrictionLawOptions& law) {
+  o.mesh_damping_ratio = root.optional_number("mesh_damping_ratio", Range::closed(0.0, 1.0)).value_or(o.mesh_damping_ratio);
+  efficiency::MeshLossOptions friction;
+  friction.friction_coefficient = mu;
+  read_friction_section(root, friction);
+  mu = friction.friction_coefficient;
+  law.model = friction.friction_model;
+  law.boundary_mu = friction.boundary_friction;
+  law.lubricant_factor = friction.lubricant_factor;
+  law.lubricant = c.lubricant;
+  if (const auto b = root.optional_number("backlash_um", Range::positive(1e4), "um")) o.backlash = *b * 1e-6;
+  o.runup_cycles = root.optional_integer("runup_cycles", 0, 1000000).value_or(o.runup_cycles);
+  o.record_cycles = root.optional_integer("record_cycles", 2, 1000000).value_or(o.record_cycles);
+  o.samples_per_cycle = root.optional_integer("samples_per_cycle", 8, 4096).value_or(o.samples_per_cycle);
+  o.integrator = read_integrator(root, o.integrator);
+}
+
+dynamics::Spur6Options read_spur6_options(model::ObjectReader& root, const json&, const model::GearCase& c) {
   dynamics::Spur6Options o;
   if (root.has("bearings")) {
     auto b = root.object("bearings");
@@ -48,21 +69,13 @@ dynamics::Spur6Options read_options(model::ObjectReader& root) {
     o.bearing_damping = b.optional_number("damping_N_s_per_m", Range::closed(0.0, 1e9), "N*s/m").value_or(o.bearing_damping);
     b.finish();
   }
-  o.mesh_damping_ratio = root.optional_number("mesh_damping_ratio", Range::closed(0.0, 1.0)).value_or(o.mesh_damping_ratio);
-  if (root.has("friction")) {
-    auto f = root.object("friction");
-    o.friction_coefficient = f.number("mu", Range::closed(0.0, 0.5));
-    f.finish();
-  }
+  read_common_options(root, c, o, o.friction_coefficient, o.friction_law);
   o.crack = read_crack(root, 1);
-  o.runup_cycles = root.optional_integer("runup_cycles", 0, 1000000).value_or(o.runup_cycles);
-  o.record_cycles = root.optional_integer("record_cycles", 2, 1000000).value_or(o.record_cycles);
-  o.samples_per_cycle = root.optional_integer("samples_per_cycle", 8, 4096).value_or(o.samples_per_cycle);
-  o.integrator = read_integrator(root, o.integrator);
   return o;
 }
 
-dynamics::Herringbone12Options read_herringbone_options(model::ObjectReader& root, const json& case_json) {
+dynamics::Herringbone12Options read_herringbone_options(model::ObjectReader& root, const json& case_json,
+                                                       const model::GearCase& c) {
   dynamics::Herringbone12Options o;
   if (root.has("bearings")) {
     auto b = root.object("bearings");
@@ -74,13 +87,13 @@ dynamics::Herringbone12Options read_herringbone_options(model::ObjectReader& roo
     b.finish();
   }
   if (root.has("groove_coupling")) {
-    auto c = root.object("groove_coupling");
-    o.groove_stiffness = c.optional_number("axial_stiffness_N_per_m", Range::closed(0.0, 1e15), "N/m");
-    o.groove_damping = c.optional_number("axial_damping_N_s_per_m", Range::closed(0.0, 1e9), "N*s/m").value_or(o.groove_damping);
-    o.twist_stiffness = c.optional_number("torsional_stiffness_N_m_per_rad", Range::closed(0.0, 1e15), "N*m/rad");
-    o.twist_damping = c.optional_number("torsional_damping_N_m_s_per_rad", Range::closed(0.0, 1e9), "N*m*s/rad")
+    auto g = root.object("groove_coupling");
+    o.groove_stiffness = g.optional_number("axial_stiffness_N_per_m", Range::closed(0.0, 1e15), "N/m");
+    o.groove_damping = g.optional_number("axial_damping_N_s_per_m", Range::closed(0.0, 1e9), "N*s/m").value_or(o.groove_damping);
+    o.twist_stiffness = g.optional_number("torsional_stiffness_N_m_per_rad", Range::closed(0.0, 1e15), "N*m/rad");
+    o.twist_damping = g.optional_number("torsional_damping_N_m_s_per_rad", Range::closed(0.0, 1e9), "N*m*s/rad")
                           .value_or(o.twist_damping);
-    c.finish();
+    g.finish();
   }
   if (root.has("mesh")) {
     auto m = root.object("mesh");
@@ -89,18 +102,9 @@ dynamics::Herringbone12Options read_herringbone_options(model::ObjectReader& roo
     o.mesh.harmonics = m.optional_integer("harmonics", 1, 50000).value_or(o.mesh.harmonics);
     m.finish();
   }
-  o.mesh_damping_ratio = root.optional_number("mesh_damping_ratio", Range::closed(0.0, 1.0)).value_or(o.mesh_damping_ratio);
-  if (root.has("friction")) {
-    auto f = root.object("friction");
-    o.mesh.friction_coefficient = f.number("mu", Range::closed(0.0, 0.5));
-    f.finish();
-  }
+  read_common_options(root, c, o, o.mesh.friction_coefficient, o.mesh.friction_law);
   o.mesh_in_impact = optional_bool(root, case_json, "mesh_in_impact").value_or(o.mesh_in_impact);
   o.half_offset = root.optional_number("half_offset_cycles", Range::closed(0.0, 1.0)).value_or(o.half_offset);
-  o.runup_cycles = root.optional_integer("runup_cycles", 0, 1000000).value_or(o.runup_cycles);
-  o.record_cycles = root.optional_integer("record_cycles", 2, 1000000).value_or(o.record_cycles);
-  o.samples_per_cycle = root.optional_integer("samples_per_cycle", 8, 4096).value_or(o.samples_per_cycle);
-  o.integrator = read_integrator(root, o.integrator);
   return o;
 }
 
@@ -129,6 +133,14 @@ json energy_json(const dynamics::EnergyBalance& e) {
   return {{"input", e.input}, {"output", e.output}, {"damping", e.damping}, {"friction", e.friction},
           {"parametric", e.parametric}, {"impact", e.impact}, {"energy_change", e.energy_change},
           {"relative_residual", e.residual}};
+}
+
+/// The contact-loss figures of a run with backlash; null without.
+template <class Result>
+json contact_json(const std::optional<double>& backlash, const Result& r) {
+  if (!backlash) return nullptr;
+  return {{"backlash_m", *backlash}, {"separation_fraction", r.contact_loss_fraction},
+          {"back_contact_fraction", r.back_contact_fraction}, {"root_events", r.contact_events}};
 }
 
 json spur6_result(const dynamics::Spur6Dynamics& solver, const dynamics::Spur6Result& r) {
@@ -254,6 +266,53 @@ json dynamic_efficiency_json(const DynamicEfficiencySpec& spec, const model::Gea
           {"friction_model", lubricant::friction_model_name(spec.loss.friction_model)}};
 }
 
+/// What differs between the two models for run_model: reading, result JSON and the series
+/// that the dynamic efficiency and the speed sweep take.
+struct Spur6Model {
+  using Solver = dynamics::Spur6Dynamics;
+  static constexpr auto read = read_spur6_options;
+  static constexpr auto result = spur6_result;
+  static std::vector<std::vector<double>> forces(const dynamics::Spur6Result& r) { return {r.mesh_force}; }
+  static double te_rms(const dynamics::Spur6Result& r) { return r.te.rms; }
+  static const dynamics::FrictionLawOptions& law(const dynamics::Spur6Options& o) { return o.friction_law; }
+};
+
+struct Herringbone12Model {
+  using Solver = dynamics::Herringbone12Dynamics;
+  static constexpr auto read = read_herringbone_options;
+  static constexpr auto result = herringbone12_result;
+  static std::vector<std::vector<double>> forces(const dynamics::Herringbone12Result& r) {
+    return {r.mesh_force[0], r.mesh_force[1]};
+  }
+  static double te_rms(const dynamics::Herringbone12Result& r) { return r.te[0].rms; }
+  static const dynamics::FrictionLawOptions& law(const dynamics::Herringbone12Options& o) { return o.mesh.friction_law; }
+};
+
+/// Reads the model's options and the shared sections, solves, and adds the dynamic
+/// efficiency and the speed sweep when asked.
+template <class Model>
+json run_model(model::ObjectReader& root, const json& case_json, const model::GearCase& c,
+               const geometry::GearPairGeometry& geometry) {
+  const auto options = Model::read(root, case_json, c);
+  const auto sweep = read_sweep(root);
+  const auto efficiency_spec = read_dynamic_efficiency(root);
+  root.finish();
+  const typename Model::Solver solver(geometry, *c.materials, *c.operating, options);
+  const auto r = solver.solve();
+  json result = Model::result(solver, r);
+  result["friction_model"] = lubricant::friction_model_name(Model::law(options).model);
+  result["contact_loss"] = contact_json(options.backlash, r);
+  if (efficiency_spec)
+    result["dynamic_efficiency"] =
+        dynamic_efficiency_json(*efficiency_spec, c, r.time, Model::forces(r), r.mesh_frequency);
+  if (sweep)
+    result["speed_sweep"] = run_sweep(*sweep, *c.operating, [&](const model::OperatingPoint& op) {
+      const auto point = typename Model::Solver(geometry, *c.materials, op, options).solve();
+      return std::tuple{point.mesh_frequency, point.dynamic_factor, Model::te_rms(point)};
+    });
+  return result;
+}
+
 json run_dynamics(const json& case_json) {
   model::ObjectReader root(case_json, "");
   root.string("kind");
@@ -263,43 +322,8 @@ json run_dynamics(const json& case_json) {
   if (!gear_case.operating) throw InputError("operating: missing required key (kind dynamics)");
   const std::string model_name = root.optional_string("model", {"spur6", "herringbone12"}).value_or("spur6");
   const geometry::GearPairGeometry geometry(gear_case.gear_pair);
-  const auto& materials = *gear_case.materials;
-  json result;
-  std::optional<Sweep> sweep;
-  if (model_name == "spur6") {
-    const auto options = read_options(root);
-    sweep = read_sweep(root);
-    const auto efficiency_spec = read_dynamic_efficiency(root);
-    root.finish();
-    const dynamics::Spur6Dynamics solver(geometry, materials, *gear_case.operating, options);
-    const auto r = solver.solve();
-    result = spur6_result(solver, r);
-    if (efficiency_spec)
-      result["dynamic_efficiency"] =
-          dynamic_efficiency_json(*efficiency_spec, gear_case, r.time, {r.mesh_force}, r.mesh_frequency);
-    if (sweep)
-      result["speed_sweep"] = run_sweep(*sweep, *gear_case.operating, [&](const model::OperatingPoint& op) {
-        const auto point = dynamics::Spur6Dynamics(geometry, materials, op, options).solve();
-        return std::tuple{point.mesh_frequency, point.dynamic_factor, point.te.rms};
-      });
-  } else {
-    const auto options = read_herringbone_options(root, case_json);
-    sweep = read_sweep(root);
-    const auto efficiency_spec = read_dynamic_efficiency(root);
-    root.finish();
-    const dynamics::Herringbone12Dynamics solver(geometry, materials, *gear_case.operating, options);
-    const auto r = solver.solve();
-    result = herringbone12_result(solver, r);
-    if (efficiency_spec)
-      result["dynamic_efficiency"] = dynamic_efficiency_json(*efficiency_spec, gear_case, r.time,
-                                                             {r.mesh_force[0], r.mesh_force[1]}, r.mesh_frequency);
-    if (sweep)
-      result["speed_sweep"] = run_sweep(*sweep, *gear_case.operating, [&](const model::OperatingPoint& op) {
-        const auto point = dynamics::Herringbone12Dynamics(geometry, materials, op, options).solve();
-        return std::tuple{point.mesh_frequency, point.dynamic_factor, point.te[0].rms};
-      });
-  }
-  return result;
+  if (model_name == "spur6") return run_model<Spur6Model>(root, case_json, gear_case, geometry);
+  return run_model<Herringbone12Model>(root, case_json, gear_case, geometry);
 }
 
 const RegisterKind dynamics_kind(

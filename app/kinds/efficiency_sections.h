@@ -10,4 +10,8 @@ namespace gearbench::app {
 /// "rolling_loss_constant_Pa", "positions", "points_per_line".
 efficiency::MeshLossOptions read_mesh_loss_options(model::ObjectReader& root);
 
+/// The "friction" section alone into the friction fields of `options` (the dynamics kind
+/// reads it too); nothing when the section is absent.
+void read_friction_section(model::ObjectReader& root, efficiency::MeshLossOptions& options);
+
 }  // namespace gearbench::app

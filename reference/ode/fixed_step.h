@@ -1,7 +1,8 @@
 #pragma once
 // The fixed-step machinery the independent dynamics references share: the classical RK4
-// step, equal steps over an interval between right-hand-side switches, and the sorted set
-// of switch and sample times the integration steps onto.
+// step, equal steps over an interval between right-hand-side switches (optionally with a
+// state-dependent mode located by bisection), and the sorted set of switch and sample
+// times the integration steps onto.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -34,6 +35,47 @@ void integrate_interval(const Rhs& f, double a, double b, double dt, State& y) {
   const auto steps = static_cast<std::size_t>(std::max(1.0, std::ceil((b - a) / dt - relative_slack)));
   const double h = (b - a) / static_cast<double>(steps);
   for (std::size_t i = 0; i < steps; ++i) rk4_step(f, a + static_cast<double>(i) * h, h, y);
+}
+
+/// From a to b in RK4 steps of at most dt under a discrete mode that holds over each step
+/// (f(mode, t, y)). Where mode_of(y) at the end of a step differs from `mode`, the step is
+/// cut: its length is bisected down to relative_slack·dt to the first point where the mode
+/// has changed, the state taken there, the mode switched and the rest of the interval
+/// integrated in equal steps again. Returns the number of switches.
+template <class State, class Rhs, class ModeOf>
+int integrate_interval_with_modes(const Rhs& f, const ModeOf& mode_of, int& mode, double a, double b, double dt,
+                                  State& y) {
+  int switches = 0;
+  double t = a;
+  while (b - t > relative_slack * dt) {
+    const auto steps = static_cast<std::size_t>(std::max(1.0, std::ceil((b - t) / dt - relative_slack)));
+    const double h = (b - t) / static_cast<double>(steps);
+    const auto step = [&](double length) {
+      State z = y;
+      rk4_step([&](double time, const State& state) { return f(mode, time, state); }, t, length, z);
+      return z;
+    };
+    bool switched = false;
+    for (std::size_t i = 0; i < steps && !switched; ++i) {
+      const State next = step(h);
+      if (mode_of(next) == mode) {
+        y = next;
+        t = (i + 1 == steps) ? b : t + h;
+        continue;
+      }
+      double lo = 0.0, hi = h;  // the mode holds at lo, has changed at hi
+      while (hi - lo > relative_slack * dt) {
+        const double mid = 0.5 * (lo + hi);
+        (mode_of(step(mid)) == mode ? lo : hi) = mid;
+      }
+      y = step(hi);
+      t += hi;
+      mode = mode_of(y);
+      ++switches;
+      switched = true;
+    }
+  }
+  return switches;
 }
 
 struct Breakpoint {

@@ -38,6 +38,40 @@ void validate(const Spur6Parameters& p) {
   require_positive(p.contact_speed, "contact_speed");
   require_positive(p.E - p.A, "E - A");
   if (!p.pair_stiffness) throw std::invalid_argument("spur6: pair_stiffness is empty");
+  if (!(p.backlash >= 0.0)) throw std::invalid_argument("spur6: backlash must be >= 0");
+  if (p.benedict_kelley) {
+    require_positive(p.benedict_kelley->viscosity, "benedict_kelley.viscosity");
+    require_positive(p.benedict_kelley->face_width, "benedict_kelley.face_width");
+    if (!(p.benedict_kelley->roughness_Ra >= 0.0 && p.benedict_kelley->roughness_Ra < 1.27e-6))
+      throw std::invalid_argument("spur6: benedict_kelley.roughness_Ra must lie in [0, 1.27e-6) m");
+  }
+}
+
+// ---- Section "Friction laws": Benedict & Kelley ----------------------------------------
+
+// Benedict & Kelley, ASLE Trans. 4 (1961) 59, as quoted by Xu et al., J. Mech. Des. 129
+// (2007) 58: μ = 0.0127·C_R·log10[3.17e8·W/(ν0·V_s·V_r²)], C_R = 50/(50 − S_avg), with W in
+// lb/in, ν0 in cP, V in in/s, S_avg in µin. Converted here: W = w/175.127 (N/m → lb/in),
+// V = v/0.0254 (m/s → in/s). The page caps μ at 0.15 (also where V_s = 0) and floors it at 0,
+// and takes w ≥ 10 N/m.
+double benedict_kelley(const Spur6Parameters::BenedictKelley& law, double w, double u1, double u2) {
+  constexpr double newton_per_metre_per_lb_per_inch = 175.127, metre_per_inch = 0.0254, cap = 0.15;
+  const double sliding = std::abs(u1 - u2) / metre_per_inch, rolling = (u1 + u2) / metre_per_inch;
+  if (sliding == 0.0) return cap;
+  const double load = std::max(w, 10.0) / newton_per_metre_per_lb_per_inch;
+  const double centipoise = law.viscosity * 1e3;
+  const double roughness_microinch = law.roughness_Ra / metre_per_inch * 1e6;
+  const double c_r = 50.0 / (50.0 - roughness_microinch);
+  const double mu = 0.0127 * c_r * std::log10(3.17e8 * load / (centipoise * sliding * rolling * rolling));
+  return std::clamp(mu, 0.0, cap);
+}
+
+// μ_j of a pair at s carrying F_j: the constant μ, or Benedict–Kelley at w = |F_j|/b with
+// the nominal surface speeds u1 = ω1·s, u2 = ω2·(T1T2 − s), ω_i = u/R_bi.
+double pair_mu(const Spur6Parameters& p, double s, double force) {
+  if (!p.benedict_kelley) return p.mu;
+  const double u1 = p.contact_speed / p.rb1 * s, u2 = p.contact_speed / p.rb2 * (p.T1T2 - s);
+  return benedict_kelley(*p.benedict_kelley, std::abs(force) / p.benedict_kelley->face_width, u1, u2);
 }
 
 // ---- Section "Mesh": the pairs in contact ---------------------------------------------
@@ -93,6 +127,19 @@ double transmission_error(const Spur6Parameters& p, const Spur6State& y, std::si
   return y[first + X1] + p.rb1 * y[first + TH1] - y[first + X2] - p.rb2 * y[first + TH2];
 }
 
+// ---- Section "Contact loss": the contact modes ------------------------------------------
+
+// +1 on the working flanks (δ > 0 and δ + τδ̇ > 0, τ = c_m/k̄: the flanks overlap and push),
+// −1 on the back flanks (δ + b < 0 and δ + b + τδ̇ < 0), 0 otherwise. Without backlash +1 always.
+int contact_mode(const Spur6Parameters& p, const Spur6State& y) {
+  if (p.backlash == 0.0) return 1;
+  const double delta = transmission_error(p, y, 0), tau_rate = mesh_damping(p) / p.mean_mesh_stiffness *
+                                                               transmission_error(p, y, rate);
+  if (delta > 0.0 && delta + tau_rate > 0.0) return 1;
+  if (delta + p.backlash < 0.0 && delta + p.backlash + tau_rate < 0.0) return -1;
+  return 0;
+}
+
 // The mesh's loads: F_m = Σ F_j (seed eq. 13) and, from section "Friction", the friction
 // force F_f on the wheel and the friction moments M1 on the pinion and M2 on the wheel.
 struct MeshLoads {
@@ -102,9 +149,11 @@ struct MeshLoads {
   double moment2 = 0.0;
 };
 
-MeshLoads mesh_loads(const Spur6Parameters& p, const ContactSet& set, double t,
+MeshLoads mesh_loads(const Spur6Parameters& p, const ContactSet& set, int mode, double t,
                      const Spur6State& y) {
-  const double delta = transmission_error(p, y, 0);
+  if (mode == 0) return {};
+  // The overlap of the flanks in contact: δ (working flanks), δ + b (back flanks).
+  const double delta = transmission_error(p, y, 0) + (mode < 0 ? p.backlash : 0.0);
   const double delta_rate = transmission_error(p, y, rate);
   const double damping_per_stiffness = mesh_damping(p) / p.mean_mesh_stiffness;
   MeshLoads loads;
@@ -112,7 +161,7 @@ MeshLoads mesh_loads(const Spur6Parameters& p, const ContactSet& set, double t,
     const double s = position(p, set, pair, t);
     const double k = p.pair_stiffness(s);
     const double force = k * delta + damping_per_stiffness * k * delta_rate;  // F_j
-    const double friction = p.mu * pair.lambda * force;
+    const double friction = pair_mu(p, s, force) * pair.lambda * force;
     loads.mesh += force;
     loads.friction += friction;
     loads.moment1 += friction * s;               // arm ρ1 = s_j
@@ -124,7 +173,8 @@ MeshLoads mesh_loads(const Spur6Parameters& p, const ContactSet& set, double t,
 // ---- Section "Loads": the quasi-static torque balance ----------------------------------
 
 // F̄ = T1/(R_b1 + ā1) and T2 = F̄·(R_b2 + ā2), ā_i the mean over the N = 720 mesh positions
-// u·t = (i + ½)·p_bt/N of μ·Σλ_j·k_j·ρ_ij / Σk_j with ρ_1j = s_j, ρ_2j = T1T2 − s_j.
+// u·t = (i + ½)·p_bt/N of Σμ_j·λ_j·k_j·ρ_ij / Σk_j with ρ_1j = s_j, ρ_2j = T1T2 − s_j, μ_j
+// at the pair's share (T1/R_b1)·k_j/Σk_j of the nominal force.
 using Loads = Spur6Loads;
 
 Loads quasi_static_loads(const Spur6Parameters& p) {
@@ -134,15 +184,16 @@ Loads quasi_static_loads(const Spur6Parameters& p) {
     const double t = (i + 0.5) * p.pbt / positions / p.contact_speed;
     const ContactSet set = contact_set_at(p, t);
     double k = 0.0, k_arm1 = 0.0, k_arm2 = 0.0;
+    for (const Pair& pair : set.pairs) k += p.pair_stiffness(position(p, set, pair, t));
     for (const Pair& pair : set.pairs) {
       const double s = position(p, set, pair, t);
       const double kj = p.pair_stiffness(s);
-      k += kj;
-      k_arm1 += kj * pair.lambda * s;
-      k_arm2 += kj * pair.lambda * (p.T1T2 - s);
+      const double mu = pair_mu(p, s, p.T1 / p.rb1 * kj / k);
+      k_arm1 += mu * kj * pair.lambda * s;
+      k_arm2 += mu * kj * pair.lambda * (p.T1T2 - s);
     }
-    arm1 += p.mu * k_arm1 / k / positions;
-    arm2 += p.mu * k_arm2 / k / positions;
+    arm1 += k_arm1 / k / positions;
+    arm2 += k_arm2 / k / positions;
   }
   const double force = p.T1 / (p.rb1 + arm1);
   return {force, force * (p.rb2 + arm2)};
@@ -155,9 +206,9 @@ double bearing_force(const Spur6State& y, std::size_t i, double k, double c) {
   return -c * y[i + rate] - k * y[i];
 }
 
-Spur6State equations_of_motion(const Spur6Parameters& p, const Loads& loads, const ContactSet& set,
+Spur6State equations_of_motion(const Spur6Parameters& p, const Loads& loads, const ContactSet& set, int mode,
                                double t, const Spur6State& y) {
-  const MeshLoads f = mesh_loads(p, set, t, y);
+  const MeshLoads f = mesh_loads(p, set, mode, t, y);
   const double T2 = loads.T2;
   Spur6State dy{};
   for (std::size_t i = 0; i < rate; ++i) dy[i] = y[i + rate];
@@ -173,12 +224,17 @@ Spur6State equations_of_motion(const Spur6Parameters& p, const Loads& loads, con
 // ---- Classical Runge–Kutta of order 4 -------------------------------------------------
 
 // From a to b (no switch strictly inside) with the pair set of the midpoint: the
-// right-hand limit of the pair set at a, the left-hand one at b.
-void integrate_interval(const Spur6Parameters& p, const Loads& loads, double a, double b, double dt,
+// right-hand limit of the pair set at a, the left-hand one at b; the contact mode held over
+// every step and switched where it changes.
+void integrate_interval(const Spur6Parameters& p, const Loads& loads, double a, double b, double dt, int& mode,
                         Spur6State& y) {
   const ContactSet set = contact_set_at(p, (a + b) / 2);
-  ode::integrate_interval(
-      [&](double t, const Spur6State& state) { return equations_of_motion(p, loads, set, t, state); }, a, b, dt, y);
+  const auto f = [&](int m, double t, const Spur6State& state) { return equations_of_motion(p, loads, set, m, t, state); };
+  if (p.backlash == 0.0)
+    ode::integrate_interval([&](double t, const Spur6State& state) { return f(1, t, state); }, a, b, dt, y);
+  else
+    ode::integrate_interval_with_modes(f, [&](const Spur6State& state) { return contact_mode(p, state); }, mode, a, b,
+                                       dt, y);
 }
 
 // ---- The times the integrator steps onto ----------------------------------------------
@@ -196,9 +252,9 @@ std::vector<ode::Breakpoint> breakpoints(const Spur6Parameters& p, double t_end,
   return ode::breakpoints(switches, t_end, dt, sample_every);
 }
 
-Spur6Sample make_sample(const Spur6Parameters& p, double t, const Spur6State& y) {
-  const MeshLoads f = mesh_loads(p, contact_set_at(p, t), t, y);
-  return {t, y, f.mesh, f.friction, transmission_error(p, y, 0)};
+Spur6Sample make_sample(const Spur6Parameters& p, double t, int mode, const Spur6State& y) {
+  const MeshLoads f = mesh_loads(p, contact_set_at(p, t), mode, t, y);
+  return {t, y, f.mesh, f.friction, transmission_error(p, y, 0), mode};
 }
 
 }  // namespace
@@ -218,6 +274,13 @@ Spur6State spur6_static_state(const Spur6Parameters& p) {
   return y;
 }
 
+double spur6_benedict_kelley(const Spur6Parameters& p, double s, double load_per_length) {
+  validate(p);
+  if (!p.benedict_kelley) throw std::invalid_argument("spur6: benedict_kelley parameters are not set");
+  const double u1 = p.contact_speed / p.rb1 * s, u2 = p.contact_speed / p.rb2 * (p.T1T2 - s);
+  return benedict_kelley(*p.benedict_kelley, load_per_length, u1, u2);
+}
+
 Spur6Loads spur6_loads(const Spur6Parameters& p) {
   validate(p);
   return quasi_static_loads(p);
@@ -229,7 +292,7 @@ Spur6State spur6_derivative(const Spur6Parameters& p, double t, const Spur6State
 
 Spur6State spur6_derivative(const Spur6Parameters& p, const Spur6Loads& loads, double t, const Spur6State& y) {
   validate(p);
-  return equations_of_motion(p, loads, contact_set_at(p, t), t, y);
+  return equations_of_motion(p, loads, contact_set_at(p, t), contact_mode(p, y), t, y);
 }
 
 std::vector<Spur6Sample> spur6_rk4(const Spur6Parameters& p, const Spur6State& y0,
@@ -242,13 +305,14 @@ std::vector<Spur6Sample> spur6_rk4(const Spur6Parameters& p, const Spur6State& y
                                 std::to_string(t_end));
 
   Spur6State y = y0;
-  std::vector<Spur6Sample> samples{make_sample(p, 0.0, y)};
+  int mode = contact_mode(p, y);
+  std::vector<Spur6Sample> samples{make_sample(p, 0.0, mode, y)};
   if (t_end == 0.0) return samples;
   const std::vector<ode::Breakpoint> points = breakpoints(p, t_end, dt, sample_every);
   const Loads loads = quasi_static_loads(p);
   for (std::size_t i = 1; i < points.size(); ++i) {
-    integrate_interval(p, loads, points[i - 1].t, points[i].t, dt, y);
-    if (points[i].sample) samples.push_back(make_sample(p, points[i].t, y));
+    integrate_interval(p, loads, points[i - 1].t, points[i].t, dt, mode, y);
+    if (points[i].sample) samples.push_back(make_sample(p, points[i].t, mode, y));
   }
   return samples;
 }

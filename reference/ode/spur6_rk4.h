@@ -9,10 +9,16 @@
 // integrates every interval between two of them with the pair set of the interval's
 // midpoint, so the right-hand side is smooth on each step and the method keeps order 4.
 //
+// With backlash (the page's section "Contact loss") the flanks push in one of three contact
+// modes (working flanks, none, back flanks); the mode holds over every step, and a step in
+// which it changes is cut where it changes, the point located by bisection of the step
+// length (RK4's own event location, nothing from CVODE).
+//
 // SI units throughout; positions on the line of action are distances from T1.
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace gearbench::reference {
@@ -30,7 +36,21 @@ struct Spur6Parameters {
   double A, C, E, T1T2, pbt;      ///< path of contact from T1 [m]; base pitch p_bt [m]
   double contact_speed;           ///< u = ω1·R_b1 [m/s]
   std::function<double(double)> pair_stiffness;  ///< k_pair(s) [N/m] for A ≤ s ≤ E
+  /// Backlash b [m] of the page's section "Contact loss"; 0: the linear mesh (contact is never lost).
+  double backlash = 0.0;
+  /// The page's Benedict–Kelley law (section "Friction laws") in place of the constant μ.
+  struct BenedictKelley {
+    double viscosity;     ///< η0 [Pa·s]
+    double roughness_Ra;  ///< mean Ra of the flanks [m]
+    double face_width;    ///< b [m]: the pair's load per length is F_j/b
+  };
+  std::optional<BenedictKelley> benedict_kelley;
 };
+
+/// μ of the page's Benedict–Kelley law at s [m from T1] under w [N/m] for these parameters
+/// (nominal surface speeds u1 = ω1·s, u2 = ω2·(T1T2 − s)). Throws std::invalid_argument
+/// without `benedict_kelley`.
+double spur6_benedict_kelley(const Spur6Parameters& p, double s, double load_per_length);
 
 /// q = [x1, y1, θ1, x2, y2, θ2] followed by q̇ (θ as deviations from the nominal rotation).
 using Spur6State = std::array<double, 12>;
@@ -63,6 +83,7 @@ struct Spur6Sample {
   double mesh_force;          ///< F_m = Σ F_j [N]
   double friction_force;      ///< F_f = Σ μ·λ_j·F_j, on the wheel along y [N]
   double transmission_error;  ///< δ [m]
+  int contact;                ///< +1 working flanks, 0 none, −1 back flanks
 };
 
 /// Classical RK4 from t = 0 to t_end with steps of at most dt (up to a relative 1e-9, so

@@ -21,6 +21,7 @@ namespace gearbench::dynamics {
 /// What CVODE calls: the right-hand side, plus where its exception waits for the caller.
 struct RhsHandle {
   const CvodeIntegrator::Rhs* rhs;
+  const CvodeIntegrator::Roots* roots;
   std::exception_ptr error;
   std::string message;  ///< CVODE's own account of its last error (it is not printed)
 };
@@ -64,6 +65,17 @@ int rhs_trampoline(realtype t, N_Vector y, N_Vector ydot, void* user_data) {
   }
 }
 
+int root_trampoline(realtype t, N_Vector y, realtype* g, void* user_data) {
+  auto& handle = *static_cast<RhsHandle*>(user_data);
+  try {
+    (*handle.roots)(t, N_VGetArrayPointer(y), g);
+    return 0;
+  } catch (...) {
+    handle.error = std::current_exception();
+    return -1;  // CVODE stops with CV_RTFUNC_FAIL
+  }
+}
+
 /// CVODE reports errors here instead of on stderr; check_flag puts the text into the error.
 void keep_error_message(int, const char* module, const char* function, char* message, void* data) {
   static_cast<RhsHandle*>(data)->message = fmt::format("{} in {}: {}", module, function, message);
@@ -82,7 +94,7 @@ CvodeIntegrator::CvodeIntegrator(std::size_t size, Rhs rhs, const CvodeOptions& 
     check_flag(CVodeInit(handles_->cvode, rhs_trampoline, 0.0, handles_->y), "CVodeInit");
     check_flag(CVodeSStolerances(handles_->cvode, options.relative_tolerance, options.absolute_tolerance),
                "CVodeSStolerances");
-    handles_->rhs = std::make_unique<RhsHandle>(RhsHandle{&rhs_, nullptr});
+    handles_->rhs = std::make_unique<RhsHandle>(RhsHandle{&rhs_, &roots_, nullptr, {}});
     check_flag(CVodeSetUserData(handles_->cvode, handles_->rhs.get()), "CVodeSetUserData");
     check_flag(CVodeSetErrHandlerFn(handles_->cvode, keep_error_message, handles_->rhs.get()), "CVodeSetErrHandlerFn");
     check_flag(CVodeSetMaxNumSteps(handles_->cvode, options.max_steps), "CVodeSetMaxNumSteps");
@@ -120,6 +132,8 @@ void CvodeIntegrator::release() {
 void CvodeIntegrator::reset(double t0, const std::vector<double>& y0) {
   if (y0.size() != y_.size()) throw std::invalid_argument("CvodeIntegrator::reset: wrong state size");
   y_ = y0;
+  t_ = t0;
+  at_root_ = false;
   std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(handles_->y));
   // A restart at a discontinuity keeps the step size reached before it, instead of CVODE's
   // cautious first step: the solution is as smooth on both sides.
@@ -130,6 +144,11 @@ void CvodeIntegrator::reset(double t0, const std::vector<double>& y0) {
   initialised_ = true;
 }
 
+void CvodeIntegrator::set_roots(int count, Roots roots) {
+  roots_ = std::move(roots);
+  check_flag(CVodeRootInit(handles_->cvode, count, root_trampoline), "CVodeRootInit");
+}
+
 const std::vector<double>& CvodeIntegrator::advance(double t_out, double stop) {
   if (!initialised_) throw std::logic_error("CvodeIntegrator::advance before reset");
   check_flag(CVodeSetStopTime(handles_->cvode, stop), "CVodeSetStopTime");
@@ -137,6 +156,8 @@ const std::vector<double>& CvodeIntegrator::advance(double t_out, double stop) {
   const int flag = CVode(handles_->cvode, t_out, handles_->y, &t, CV_NORMAL);
   if (handles_->rhs->error) std::rethrow_exception(std::exchange(handles_->rhs->error, nullptr));
   check_flag(flag, "CVode", handles_->rhs->message);
+  t_ = t;
+  at_root_ = flag == CV_ROOT_RETURN;
   const double* data = N_VGetArrayPointer(handles_->y);
   std::copy(data, data + y_.size(), y_.begin());
   return y_;

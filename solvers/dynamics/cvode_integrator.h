@@ -1,7 +1,7 @@
 #pragma once
 // A small RAII wrapper of SUNDIALS 6.4 CVODE (serial N_Vector; Adams with fixed-point
-// iteration, or BDF with Newton on a dense direct linear solver):
-// every SUNDIALS return code is turned into a ConvergenceError or std::runtime_error with
+// iteration, or BDF with Newton on a dense direct linear solver), with optional root
+// functions (CVodeRootInit) at which advance() stops: every SUNDIALS return code is turned into a ConvergenceError or std::runtime_error with
 // the flag's name, at once.
 #include <functional>
 #include <vector>
@@ -21,6 +21,8 @@ class CvodeIntegrator {
  public:
   /// dy/dt = f(t, y), written into dydt.
   using Rhs = std::function<void(double t, const double* y, double* dydt)>;
+  /// The root functions g_i(t, y), written into g.
+  using Roots = std::function<void(double t, const double* y, double* g)>;
 
   CvodeIntegrator(std::size_t size, Rhs rhs, const CvodeOptions& options);
   ~CvodeIntegrator();
@@ -29,8 +31,15 @@ class CvodeIntegrator {
 
   /// Starts (or restarts, after a discontinuity of f) at t0 from y0.
   void reset(double t0, const std::vector<double>& y0);
-  /// Integrates to t_out exactly, never past `stop` (a discontinuity of f); returns y(t_out).
+  /// From now on advance() stops where one of the `count` functions g_i changes sign.
+  void set_roots(int count, Roots roots);
+  /// Integrates to t_out exactly, never past `stop` (a discontinuity of f), or to the first
+  /// root of the root functions before t_out; returns y there (at time()).
   const std::vector<double>& advance(double t_out, double stop);
+  /// The time of the state advance() returned last.
+  [[nodiscard]] double time() const { return t_; }
+  /// Whether advance() stopped at a root.
+  [[nodiscard]] bool at_root() const { return at_root_; }
   [[nodiscard]] long steps() const;
   [[nodiscard]] long rhs_evaluations() const;
 
@@ -39,7 +48,10 @@ class CvodeIntegrator {
   void release();
   Handles* handles_;
   Rhs rhs_;
+  Roots roots_;
   std::vector<double> y_;
+  double t_ = 0.0;
+  bool at_root_ = false;
   bool initialised_ = false;
 };
 

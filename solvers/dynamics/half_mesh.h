@@ -10,12 +10,20 @@
 // the finite slices (near slices × the mesh frequency) are filtered out.
 // Spur (β_b = 0): the transverse pair sum of the 6-DOF model, evaluated directly, with its
 // switch times (a pair enters, leaves, passes the pitch point).
+//
+// With a friction law (docs/dynamics-model.md, "Friction laws") the arms depend on the
+// half's instantaneous normal force F: spur, per pair from its share F·k_j/Σk; helical,
+// tabulated (and represented by their harmonics) at the load levels F_l = (l/4)·F_nom,
+// l = 0..12, F_nom = T_p/(R_p·cos β_b), and interpolated linearly in F between them (held
+// at the top level beyond 3·F_nom).
 #include <array>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "geometry/gear_pair_geometry.h"
 #include "model/materials.h"
+#include "pair_friction.h"
 #include "stiffness/cubic_spline.h"
 #include "stiffness/pair_stiffness.h"
 
@@ -50,7 +58,8 @@ struct HalfMeshOptions {
   int slices = 100;     ///< face-width slices of a helical half
   int positions = 720;  ///< table points over one mesh cycle (helical)
   int harmonics = 24;   ///< mesh harmonics kept of the tables (helical); the slicing's steps lie far above
-  double friction_coefficient = 0.0;
+  double friction_coefficient = 0.0;  ///< μ of the constant law
+  FrictionLawOptions friction_law;    ///< a law of solvers/lubricant instead
   void validate() const;  ///< InputError naming the key
 };
 
@@ -59,11 +68,17 @@ class HalfMesh {
   /// `geometry` is the herringbone pair (face width per half) or a spur pair; it must
   /// outlive this object.
   HalfMesh(const geometry::GearPairGeometry& geometry, const std::array<model::Material, 2>& materials,
-           double pinion_speed, HalfMeshOptions options);
+           const model::OperatingPoint& operating, HalfMeshOptions options);
 
   /// The excitation at time t of the half's own mesh clock (t = 0: a pair enters at A on
   /// the front face), the pair set of the interval holding t_mid (spur; ignored helical).
+  /// Under a friction law the arms are those at the nominal force F_nom (see arms()).
   [[nodiscard]] MeshPoint at(double t, double t_mid) const;
+  /// Whether the arms depend on the load (a friction law other than the constant one).
+  [[nodiscard]] bool load_dependent_friction() const { return !friction_.constant(); }
+  /// χ_p, χ_g [m] under the friction law at time t with the half's normal force F [N]
+  /// (its magnitude loads the contacts).
+  [[nodiscard]] std::array<double, 2> arms(double t, double t_mid, double force) const;
   /// Times in (t0, t1) of the half's own clock where the excitation jumps (spur only).
   [[nodiscard]] std::vector<double> switch_times(double t0, double t1) const;
   [[nodiscard]] double period() const { return period_; }
@@ -77,11 +92,19 @@ class HalfMesh {
 
  private:
   struct Sums {
-    double k = 0.0, k_rho1 = 0.0, k_rho2 = 0.0;  ///< Σk, Σk·λ·ρ1, Σk·λ·ρ2
-    void add(double k_pair, double s, const geometry::PathOfContact& path);
+    double k = 0.0, k_rho1 = 0.0, k_rho2 = 0.0;  ///< Σk, Σk·λ·ρ1·f, Σk·λ·ρ2·f (f = μ_c/scale)
+    void add(double k_pair, double s, double lambda, const geometry::PathOfContact& path, double factor);
   };
-  [[nodiscard]] MeshPoint spur_point(double t, double t_mid) const;
+  /// One contact: position s, stiffness k (helical: slice width w/b times k_pair), sliding sign λ.
+  struct Contact {
+    double s, k, lambda;
+  };
+  [[nodiscard]] std::vector<Contact> helical_contacts(double s0) const;
+  /// Σ over the contacts with μ_c of the law at the share F·k_c/Σk of `force` over `length` each.
+  [[nodiscard]] Sums loaded_sums(std::span<const Contact> contacts, double force, double length) const;
+  [[nodiscard]] MeshPoint spur_point(double t, double t_mid, double force) const;
   void build_tables(const std::array<model::Material, 2>& materials);
+  void build_load_levels();
 
   const geometry::GearPairGeometry& geometry_;
   HalfMeshOptions options_;
@@ -90,6 +113,9 @@ class HalfMesh {
   double speed_ = 0.0;   ///< u = ω1·r_b1 [m/s]
   double period_ = 0.0;  ///< T_mesh = p_bt/u [s]
   std::optional<FourierSeries> k_, chi_p_, chi_g_;
+  PairFriction friction_;
+  double nominal_force_ = 0.0;  ///< F_nom = T_p/(R_p·cos β_b) per half [N]
+  std::vector<FourierSeries> chi_p_levels_, chi_g_levels_;  ///< arms at F_l = (l/4)·F_nom, l = 0..12
   MeshPoint mean_;
   double consistency_ = 0.0, truncation_ = 0.0;
 };

@@ -70,6 +70,8 @@ void Herringbone12Options::validate() const {
   check_range(twist_damping, 0.0, 1e9, "groove_coupling.torsional_damping_N_m_s_per_rad");
   check_range(mesh_damping_ratio, 0.0, 1.0, "mesh_damping_ratio");
   check_range(half_offset, 0.0, 1.0, "half_offset_cycles");
+  if (backlash && !(*backlash > 0.0 && *backlash <= 1e-2))
+    throw InputError(fmt::format("backlash_um = {}: allowed range is (0, 10000]", *backlash * 1e6));
   mesh.validate();
   if (runup_cycles < 0 || runup_cycles > 1000000)
     throw InputError(fmt::format("runup_cycles = {}: allowed range is [0, 1000000]", runup_cycles));
@@ -83,7 +85,7 @@ Herringbone12Dynamics::Herringbone12Dynamics(const geometry::GearPairGeometry& g
                                              const std::array<model::Material, 2>& materials,
                                              const model::OperatingPoint& operating, Herringbone12Options options)
     : options_((options.validate(), std::move(options))),
-      mesh_(geometry, materials, operating.pinion_speed, options_.mesh) {
+      mesh_(geometry, materials, operating, options_.mesh) {
   const auto& pair = geometry.pair();
   if (pair.helix_angle > 0.0 && !pair.herringbone)
     throw InputError("gear_pair.herringbone: missing; model \"herringbone12\" needs a herringbone pair "
@@ -172,24 +174,56 @@ double Herringbone12Dynamics::impact_force(int half, double t, double t_mid) con
 
 // docs/dynamics-model.md, "Mesh force per half" (seed 000 eq. 7, base helix angle):
 // δ_h = cos β_b·(y_p − y_g + R_p θ_p − R_g θ_g) + σ_h sin β_b·(z_p − z_g).
+double Herringbone12Dynamics::delta(int h, const double* y, int first) const {
+  const double cb = std::cos(p_.beta_b), sb = std::sin(p_.beta_b);
+  return cb * (y[first + index(h, YP)] - y[first + index(h, YG)] + p_.R_p * y[first + index(h, TP)] -
+               p_.R_g * y[first + index(h, TG)]) +
+         hand[h] * sb * (y[first + index(h, ZP)] - y[first + index(h, ZG)]);
+}
+
 Herringbone12Dynamics::HalfState Herringbone12Dynamics::half_state(int h, double t, double t_mid,
                                                                  const double* y) const {
-  const double cb = std::cos(p_.beta_b), sb = std::sin(p_.beta_b);
-  auto d = [&](int first) {
-    return cb * (y[first + index(h, YP)] - y[first + index(h, YG)] + p_.R_p * y[first + index(h, TP)] -
-                 p_.R_g * y[first + index(h, TG)]) +
-           hand[h] * sb * (y[first + index(h, ZP)] - y[first + index(h, ZG)]);
-  };
   HalfState s;
   const double offset = p_.clock_offset[static_cast<std::size_t>(h)];
   s.mesh = mesh_.at(t + offset, t_mid + offset);
-  s.delta = d(0);
-  s.delta_rate = d(rate);
+  s.delta = delta(h, y, 0);
+  s.delta_rate = delta(h, y, rate);
   s.stiffness = s.mesh.stiffness;
   s.damping = p_.mesh_damping * s.stiffness / p_.mean_mesh_stiffness;
   s.force = s.stiffness * s.delta + s.damping * s.delta_rate;
+  s.penetration = s.delta;
+  s.mesh_dissipation = s.damping * s.delta_rate * s.delta_rate;
+  if (options_.backlash) {
+    // Contact loss (docs, "Contact loss"): the flanks overlap by p = δ or δ + b and push, never pull.
+    const double b = *options_.backlash;
+    s.back = s.delta < -b;
+    s.penetration = s.delta > 0.0 ? s.delta : (s.back ? s.delta + b : 0.0);
+    const double pushed = s.stiffness * s.penetration + s.damping * s.delta_rate;
+    s.force = s.delta > 0.0 ? std::max(0.0, pushed) : (s.back ? std::min(0.0, pushed) : 0.0);
+    // (F_n − k·p)·δ̇: c·δ̇² while the flanks push, −k·p·δ̇ ≥ 0 while they separate, 0 in the backlash.
+    if (s.force == 0.0) s.mesh_dissipation = -s.stiffness * s.penetration * s.delta_rate;
+  }
+  if (mesh_.load_dependent_friction()) {
+    const auto arms = mesh_.arms(t + offset, t_mid + offset, s.force);
+    s.mesh.chi_pinion = arms[0];
+    s.mesh.chi_wheel = arms[1];
+  }
   s.impact = impact_force(h, t, t_mid);
+  // With contact loss the pulse needs the working flanks in contact: the entering pair meets
+  // early only by the loaded deflection (docs, "Contact loss").
+  if (options_.backlash && !(s.delta > 0.0)) s.impact = 0.0;
   return s;
+}
+
+std::vector<double> Herringbone12Dynamics::contact_functions(const double* y) const {
+  if (!options_.backlash) return {};
+  const double b = *options_.backlash, tau = p_.mesh_damping / p_.mean_mesh_stiffness;
+  std::vector<double> g;
+  for (int h = 0; h < 2; ++h) {
+    const double d = delta(h, y, 0), tau_rate = tau * delta(h, y, rate);
+    g.insert(g.end(), {d, d + b, d + tau_rate, d + b + tau_rate});
+  }
+  return g;
 }
 
 // docs/dynamics-model.md, "Equations of motion" (seed 000 eqs 1–4).
@@ -215,9 +249,9 @@ void Herringbone12Dynamics::derivative(double t, double t_mid, const double* y, 
                                  p_.c_twist * (v(h, TG) - v(o, TG)) - p_.k_twist * (q(h, TG) - q(o, TG))) / p_.I_g;
     // Powers of the page's energy balance (section "Energy balance").
     damping += p_.c_radial * (v(h, YP) * v(h, YP) + v(h, YG) * v(h, YG)) + p_.c_axial_p * v(h, ZP) * v(h, ZP) +
-               p_.c_axial_g * v(h, ZG) * v(h, ZG) + s.damping * s.delta_rate * s.delta_rate;
+               p_.c_axial_g * v(h, ZG) * v(h, ZG) + s.mesh_dissipation;
     friction += s.force * (s.mesh.chi_pinion * (p_.omega_p + v(h, TP)) - s.mesh.chi_wheel * (p_.omega_g + v(h, TG)));
-    parametric += 0.5 * s.mesh.rate * s.delta * s.delta;
+    parametric += 0.5 * s.mesh.rate * s.penetration * s.penetration;
     impact += s.impact * (p_.R_g * v(h, TG) - p_.R_p * v(h, TP));
   }
   for (const Local c : {ZP, ZG, TP, TG}) {
@@ -230,7 +264,8 @@ void Herringbone12Dynamics::derivative(double t, double t_mid, const double* y, 
   dydt[work + 3] = impact;
 }
 
-// E = ½Σm·q̇² + ½Σ I(Ω + θ̇)² + ½Σ k·q² (bearings, groove) + ½Σ_h k_h(t)·δ_h².
+// E = ½Σm·q̇² + ½Σ I(Ω + θ̇)² + ½Σ k·q² (bearings, groove) + ½Σ_h k_h(t)·p_h² (p_h = δ_h
+// without contact loss).
 double Herringbone12Dynamics::energy(double t, double t_mid, const double* y) const {
   double e = 0.0;
   for (int h = 0; h < 2; ++h) {
@@ -240,7 +275,7 @@ double Herringbone12Dynamics::energy(double t, double t_mid, const double* y) co
     e += p_.I_p * (p_.omega_p + v(TP)) * (p_.omega_p + v(TP)) + p_.I_g * (p_.omega_g + v(TG)) * (p_.omega_g + v(TG));
     e += p_.k_radial * (q(YP) * q(YP) + q(YG) * q(YG)) + p_.k_axial_p * q(ZP) * q(ZP) + p_.k_axial_g * q(ZG) * q(ZG);
     const HalfState s = half_state(h, t, t_mid, y);
-    e += s.stiffness * s.delta * s.delta;
+    e += s.stiffness * s.penetration * s.penetration;
   }
   for (const Local c : {ZP, ZG, TP, TG}) {
     const double dq = y[index(0, c)] - y[index(1, c)];
@@ -337,6 +372,11 @@ Herringbone12Result Herringbone12Dynamics::solve() const {
   double t_mid = 0.0;
   CvodeIntegrator integrator(state_size, [&](double t, const double* y, double* dydt) { derivative(t, t_mid, y, dydt); },
                              options_.integrator);
+  if (options_.backlash)
+    integrator.set_roots(8, [this](double, const double* y, double* g) {
+      const auto values = contact_functions(y);
+      std::copy(values.begin(), values.end(), g);
+    });
   Herringbone12Result r;
   r.static_mesh_force = p_.static_force;
   r.mesh_frequency = 1.0 / T;
@@ -351,6 +391,8 @@ Herringbone12Result Herringbone12Dynamics::solve() const {
       r.transmission_error[static_cast<std::size_t>(h)].push_back(s.delta);
       r.mesh_force[static_cast<std::size_t>(h)].push_back(s.force);
       r.friction_torque[static_cast<std::size_t>(h)].push_back(s.force * s.mesh.chi_pinion);
+      if (s.force == 0.0) r.contact_loss_fraction += 0.5;
+      if (s.back) r.back_contact_fraction += 0.5;
     }
     r.axial_float.push_back(0.5 * (state[index(0, ZP)] + state[index(1, ZP)]));
     r.bearing_force_pinion.push_back(p_.k_radial * state[index(0, YP)] + p_.c_radial * state[rate + index(0, YP)]);
@@ -367,10 +409,22 @@ Herringbone12Result Herringbone12Dynamics::solve() const {
     t_mid = 0.5 * (a + b);
     integrator.reset(a, y);
     double reached = a;
+    // To `target`, restarting where a contact function has a root (the force kinks or jumps).
+    auto advance_once = [&](double target) {
+      y = integrator.advance(target, b);
+      while (integrator.at_root()) {
+        ++r.contact_events;
+        r.steps += integrator.steps();
+        r.rhs_evaluations += integrator.rhs_evaluations();
+        integrator.reset(integrator.time(), y);
+        if (integrator.time() > target - tiny) break;  // a root on the target: y is y(target)
+        y = integrator.advance(target, b);
+      }
+    };
     // Long stretches go in whole mesh cycles (CVODE's step limit is per call).
     auto advance_to = [&](double target) {
-      while (target > reached + T) y = integrator.advance(reached += T, b);
-      y = integrator.advance(target, b);
+      while (target > reached + T) advance_once(reached += T);
+      advance_once(target);
       reached = target;
     };
     while (next < samples) {
@@ -409,6 +463,8 @@ Herringbone12Result Herringbone12Dynamics::solve() const {
                                                       r.static_mesh_force);
   }
   r.float_stats = statistics(r.axial_float);
+  r.contact_loss_fraction /= static_cast<double>(r.time.size());
+  r.back_contact_fraction /= static_cast<double>(r.time.size());
   // The spectrum and periodicity over whole cycles: the closing sample repeats the first phase.
   std::vector<double> te(r.transmission_error[0].begin(), r.transmission_error[0].end() - 1);
   amplitude_spectrum(te, dt, r.spectrum_frequency, r.spectrum_te);

@@ -32,6 +32,8 @@ struct Herringbone12Options {
   double mesh_damping_ratio = 0.07;  ///< ζ_m per half
   bool mesh_in_impact = true;        ///< seed 000 eq. 6
   double half_offset = 0.0;          ///< the right half's mesh lags by this fraction of a mesh cycle
+  /// Backlash b [m] along the normal, per half: contact loss on (docs, "Contact loss"); none: linear mesh.
+  std::optional<double> backlash;
   HalfMeshOptions mesh;
   int runup_cycles = 100;
   int record_cycles = 20;
@@ -74,6 +76,9 @@ struct Herringbone12Result {
   std::vector<double> natural_frequencies;                 ///< [Hz], rigid-body modes left out
   std::vector<std::vector<double>> mode_shapes;            ///< per frequency, M-normalised q
   double mesh_frequency = 0.0, periodicity = 0.0, load_torque = 0.0;
+  double contact_loss_fraction = 0.0;  ///< share of the recorded samples and halves without mesh force
+  double back_contact_fraction = 0.0;  ///< share of the recorded samples and halves on the back flanks
+  long contact_events = 0;             ///< roots of the contact functions (restarts), whole run
   EnergyBalance energy;
   long steps = 0, rhs_evaluations = 0;
   double seconds = 0.0;
@@ -99,13 +104,20 @@ class Herringbone12Dynamics {
   [[nodiscard]] std::vector<double> natural_frequencies(std::vector<std::vector<double>>* shapes = nullptr) const;
   /// The eq. 6 pulse of half h at time t (the interval holding t_mid decides if it acts).
   [[nodiscard]] double impact_force(int half, double t, double t_mid) const;
+  /// The contact functions of docs/dynamics-model.md, "Contact loss", for both halves:
+  /// δ_h, δ_h + b, δ_h + τδ̇_h, δ_h + b + τδ̇_h (τ = c_m/k̄); empty without backlash.
+  [[nodiscard]] std::vector<double> contact_functions(const double* y) const;
 
  private:
   struct HalfState {
     double delta = 0, delta_rate = 0, force = 0, stiffness = 0, damping = 0, impact = 0;
+    double penetration = 0;       ///< δ (linear mesh), or the overlap of the flanks in contact
+    double mesh_dissipation = 0;  ///< (F_n − k·p)·δ̇
+    bool back = false;
     MeshPoint mesh;
   };
   [[nodiscard]] HalfState half_state(int half, double t, double t_mid, const double* y) const;
+  [[nodiscard]] double delta(int half, const double* y, int first) const;  ///< δ_h (first 0) or δ̇_h (first 12)
   [[nodiscard]] double energy(double t, double t_mid, const double* y) const;
   [[nodiscard]] std::vector<double> break_times(double t0, double t1) const;
 

@@ -38,6 +38,9 @@ void Spur6Options::validate() const {
     throw InputError(fmt::format("crack.gear = {}: allowed values are 1 (the pinion)", crack->gear + 1));
   if (samples_per_cycle < 8 || samples_per_cycle > 4096)
     throw InputError(fmt::format("samples_per_cycle = {}: allowed range is [8, 4096]", samples_per_cycle));
+  if (backlash && !(*backlash > 0.0 && *backlash <= 1e-2))
+    throw InputError(fmt::format("backlash_um = {}: allowed range is (0, 10000]", *backlash * 1e6));
+  friction_law.validate();
 }
 
 Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
@@ -45,6 +48,7 @@ Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
                              const model::OperatingPoint& operating, Spur6Options options)
     : geometry_(geometry),
       options_((options.validate(), std::move(options))),
+      friction_(geometry, materials, operating, options_.friction_coefficient, options_.friction_law),
       pair_(geometry, materials, stiffness::BeamStart::improved,
             {0.5 * geometry.radii(0).root, 0.5 * geometry.radii(1).root}, options_.crack, true) {
   if (geometry_.base_helix_angle() > 0.0)
@@ -74,6 +78,8 @@ Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
   p_.pbt = geometry_.base_pitch_transverse();
   p_.contact_speed = operating.pinion_speed * p_.rb1;
   p_.z1 = pair.teeth[0];
+  p_.face_width = pair.face_width;
+  p_.backlash = options_.backlash.value_or(0.0);
   p_.crack_mouth = p_.rb1 * std::tan(geometry_.transverse_pressure_angle());
   if (geometry_.contact_ratio_transverse() >= 2.0)
     throw InputError(fmt::format("gear_pair: transverse contact ratio {:.4f}; model \"spur6\" allows [1, 2) "
@@ -93,18 +99,21 @@ Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
   }
   p_.mean_mesh_stiffness = sum / samples;
   // Quasi-static torque balance under the mean friction arms (docs/dynamics-model.md,
-  // "Loads"): ā_i = mean over u·t = (i + ½)·p_bt/N of μ·Σλ_j·k_j·ρ_ij / Σk_j.
+  // "Loads"): ā_i = mean over u·t = (i + ½)·p_bt/N of Σμ_j·λ_j·k_j·ρ_ij / Σk_j, μ_j of a law
+  // at the pair's share (T1/R_b1)·k_j/Σk_j of the nominal force.
   double arm1 = 0.0, arm2 = 0.0;
   for (int i = 0; i < samples; ++i) {
+    const auto positions = geometry_.positions_in_contact(p_.A + p_.pbt * (i + 0.5) / samples);
     double k_sum = 0.0, k1 = 0.0, k2 = 0.0;
-    for (const double t : geometry_.positions_in_contact(p_.A + p_.pbt * (i + 0.5) / samples)) {
+    for (const double t : positions) k_sum += pair_stiffness(t);
+    for (const double t : positions) {
       const double kj = pair_stiffness(t), lambda = t > p_.C ? 1.0 : (t < p_.C ? -1.0 : 0.0);
-      k_sum += kj;
-      k1 += kj * lambda * t;
-      k2 += kj * lambda * (p_.T1T2 - t);
+      const double mu_factor = friction_.factor(t, p_.T1 / p_.rb1 * kj / k_sum / p_.face_width);
+      k1 += kj * lambda * t * mu_factor;
+      k2 += kj * lambda * (p_.T1T2 - t) * mu_factor;
     }
-    arm1 += p_.mu * k1 / k_sum / samples;
-    arm2 += p_.mu * k2 / k_sum / samples;
+    arm1 += friction_.scale() * k1 / k_sum / samples;
+    arm2 += friction_.scale() * k2 / k_sum / samples;
   }
   p_.static_force = p_.T1 / (p_.rb1 + arm1);
   p_.T2 = p_.static_force * (p_.rb2 + arm2);
@@ -131,6 +140,14 @@ Spur6Dynamics::MeshState Spur6Dynamics::mesh(double t, double t_mid, const doubl
   MeshState m;
   m.delta = delta;
   m.delta_rate = delta_rate;
+  m.penetration = delta;
+  // Contact loss (docs, "Contact loss"): the flanks overlap by p = δ (working flanks) or
+  // δ + b (back flanks) and push, never pull.
+  const bool loss = options_.backlash.has_value();
+  if (loss) {
+    m.back = delta < -p_.backlash;
+    m.penetration = delta > 0.0 ? delta : (m.back ? delta + p_.backlash : 0.0);
+  }
   for (int j = 0; j < 3; ++j) {
     const double s_mid = p_.A + u * t_mid - n * p_.pbt + j * p_.pbt;
     if (s_mid < p_.A || s_mid > p_.E) continue;
@@ -141,7 +158,11 @@ Spur6Dynamics::MeshState Spur6Dynamics::mesh(double t, double t_mid, const doubl
     const bool acting = cracked && (options_.crack->crack.type == stiffness::Crack::Type::root || s_mid > p_.crack_mouth);
     const double k = pair_stiffness(s, cracked, acting);
     const double c = p_.mesh_damping * k / p_.mean_mesh_stiffness;
-    const double force = k * delta + c * delta_rate;
+    double force = k * delta + c * delta_rate;
+    if (loss) {
+      const double pushed = k * m.penetration + c * delta_rate;
+      force = delta > 0.0 ? std::max(0.0, pushed) : (m.back ? std::min(0.0, pushed) : 0.0);
+    }
     // dk/dt = u·dk/ds by a central difference, one-sided at the path's ends.
     const double h = 1e-6 * (p_.E - p_.A);
     const double lo = std::max(p_.A, s - h), hi = std::min(p_.E, s + h);
@@ -150,11 +171,17 @@ Spur6Dynamics::MeshState Spur6Dynamics::mesh(double t, double t_mid, const doubl
     m.stiffness_rate += u * (pair_stiffness(hi, cracked, acting) - pair_stiffness(lo, cracked, acting)) / (hi - lo);
     // The sliding direction of the whole interval (intervals end where a pair passes C).
     const double lambda = s_mid > p_.C ? 1.0 : (s_mid < p_.C ? -1.0 : 0.0);
+    // μ of the law at the pair's own load; the constant μ bit for bit.
+    const double mu = friction_.coefficient(s, std::abs(force) / p_.face_width);
     m.force += force;
-    m.friction += p_.mu * lambda * force;
-    m.moment1 += p_.mu * lambda * force * s;
-    m.moment2 += p_.mu * lambda * force * (p_.T1T2 - s);
+    m.friction += mu * lambda * force;
+    m.moment1 += mu * lambda * force * s;
+    m.moment2 += mu * lambda * force * (p_.T1T2 - s);
   }
+  // (F_m − Σk_j·p)·δ̇: Σc_j·δ̇² while the flanks push, −Σk_j·p·δ̇ ≥ 0 while they separate faster
+  // than the damper allows (F_m = 0 at p ≠ 0), 0 in the backlash.
+  m.mesh_dissipation = m.force != 0.0 || !loss ? m.damping * delta_rate * delta_rate
+                                                : -m.stiffness * m.penetration * delta_rate;
   return m;
 }
 
@@ -172,19 +199,27 @@ void Spur6Dynamics::derivative(double t, double t_mid, const double* y, double* 
   const double w1 = p_.contact_speed / p_.rb1, w2 = w1 * p_.rb1 / p_.rb2;
   double bearings = 0.0;
   for (const int i : {6, 7, 9, 10}) bearings += p_.c_bearing * y[i] * y[i];
-  dydt[12] = bearings + m.damping * m.delta_rate * m.delta_rate;
+  dydt[12] = bearings + m.mesh_dissipation;
   dydt[13] = m.moment1 * (w1 + y[8]) - m.moment2 * (w2 + y[11]) - m.friction * (y[10] - y[7]);
-  dydt[14] = 0.5 * m.stiffness_rate * m.delta * m.delta;
+  dydt[14] = 0.5 * m.stiffness_rate * m.penetration * m.penetration;
 }
 
-// E = ½Σm·q̇² + ½Σ I·(Ω + θ̇)² + ½k_b·Σq² + ½Σk_j·δ².
+// E = ½Σm·q̇² + ½Σ I·(Ω + θ̇)² + ½k_b·Σq² + ½Σk_j·p² (p = δ without contact loss).
 double Spur6Dynamics::energy(double t, double t_mid, const double* y) const {
   const double w1 = p_.contact_speed / p_.rb1, w2 = w1 * p_.rb1 / p_.rb2;
   const MeshState m = mesh(t, t_mid, y);
   double e = p_.m1 * (y[6] * y[6] + y[7] * y[7]) + p_.m2 * (y[9] * y[9] + y[10] * y[10]);
   e += p_.I1 * (w1 + y[8]) * (w1 + y[8]) + p_.I2 * (w2 + y[11]) * (w2 + y[11]);
   for (const int i : {0, 1, 3, 4}) e += p_.k_bearing * y[i] * y[i];
-  return 0.5 * (e + m.stiffness * m.delta * m.delta);
+  return 0.5 * (e + m.stiffness * m.penetration * m.penetration);
+}
+
+std::vector<double> Spur6Dynamics::contact_functions(const double* y) const {
+  if (!options_.backlash) return {};
+  const double delta = y[0] + p_.rb1 * y[2] - y[3] - p_.rb2 * y[5];
+  const double rate = y[6] + p_.rb1 * y[8] - y[9] - p_.rb2 * y[11];
+  const double tau = p_.mesh_damping / p_.mean_mesh_stiffness;
+  return {delta, delta + p_.backlash, delta + tau * rate, delta + p_.backlash + tau * rate};
 }
 
 std::vector<double> Spur6Dynamics::static_state() const {
@@ -249,6 +284,11 @@ Spur6Result Spur6Dynamics::solve() const {
   double t_mid = 0.0;
   CvodeIntegrator integrator(state_size, [&](double t, const double* y, double* dydt) { derivative(t, t_mid, y, dydt); },
                              options_.integrator);
+  if (options_.backlash)
+    integrator.set_roots(4, [this](double, const double* y, double* g) {
+      const auto values = contact_functions(y);
+      std::copy(values.begin(), values.end(), g);
+    });
   Spur6Result r;
   r.static_mesh_force = p_.static_force;
   r.mesh_frequency = 1.0 / T_mesh;
@@ -270,6 +310,8 @@ Spur6Result Spur6Dynamics::solve() const {
     r.mesh_force.push_back(m.force);
     r.friction_force.push_back(m.friction);
     r.bearing_force_x1.push_back(p_.k_bearing * state[0] + p_.c_bearing * state[6]);
+    if (m.force == 0.0) r.contact_loss_fraction += 1.0;
+    if (m.back) r.back_contact_fraction += 1.0;
   };
   double jumps = 0.0;  // ½Σ Δk_j·δ² where pairs enter and leave inside the window
   for (std::size_t i = 0; i < breaks.size(); ++i) {
@@ -280,18 +322,27 @@ Spur6Result Spur6Dynamics::solve() const {
     // CVODE refuses an output time within its own rounding of the current time.
     const double tiny = 1e-9 * dt;
     double reached = a;
+    // To `target`, restarting where a contact function has a root (the force kinks or jumps).
+    auto advance_to = [&](double target) {
+      y = integrator.advance(target, b);
+      while (integrator.at_root()) {
+        ++r.contact_events;
+        r.steps += integrator.steps();
+        r.rhs_evaluations += integrator.rhs_evaluations();
+        integrator.reset(integrator.time(), y);
+        if (integrator.time() > target - tiny) break;  // a root on the target: y is y(target)
+        y = integrator.advance(target, b);
+      }
+      reached = target;
+    };
     while (next_sample < samples) {
       const double ts = t_record + static_cast<double>(next_sample) * dt;
       if (ts > b + tiny) break;
-      if (ts > reached + tiny) {
-        const double target = std::min(ts, b);
-        y = integrator.advance(target, b);
-        reached = target;
-      }
+      if (ts > reached + tiny) advance_to(std::min(ts, b));
       if (ts >= a - tiny) record_sample(ts, y);
       ++next_sample;
     }
-    if (b > reached + tiny) y = integrator.advance(b, b);
+    if (b > reached + tiny) advance_to(b);
     if (i + 1 < breaks.size() && b > t_record - tiny)
       jumps += energy(b, 0.5 * (b + breaks[i + 1]), y.data()) - energy(b, t_mid, y.data());
     r.steps += integrator.steps();
@@ -312,6 +363,8 @@ Spur6Result Spur6Dynamics::solve() const {
   r.te = statistics(r.transmission_error);
   r.force = statistics(r.mesh_force);
   r.friction = statistics(r.friction_force);
+  r.contact_loss_fraction /= static_cast<double>(r.time.size());
+  r.back_contact_fraction /= static_cast<double>(r.time.size());
   r.dynamic_factor = *std::max_element(r.mesh_force.begin(), r.mesh_force.end()) / r.static_mesh_force;
   amplitude_spectrum(r.transmission_error, dt, r.spectrum_frequency, r.spectrum_te);
   r.natural_frequencies = natural_frequencies();

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cvode_integrator.h"
+#include "pair_friction.h"
 #include "response_analysis.h"
 #include "geometry/gear_pair_geometry.h"
 #include "model/materials.h"
@@ -25,7 +26,10 @@ struct Spur6Options {
   double bearing_stiffness = 1e8;    ///< k1 = k2 [N/m], x and y (gearbench default)
   double bearing_damping = 1e3;      ///< c1 = c2 [N·s/m]
   double mesh_damping_ratio = 0.07;  ///< ζ_m
-  double friction_coefficient = 0.06;  ///< μ (seed 003)
+  double friction_coefficient = 0.06;  ///< μ of the constant law (seed 003)
+  FrictionLawOptions friction_law;     ///< a law of solvers/lubricant instead (docs, "Friction laws")
+  /// Backlash b [m]: contact loss on (docs, "Contact loss"); none: the linear mesh.
+  std::optional<double> backlash;
   std::optional<stiffness::GearCrack> crack;
   int runup_cycles = 60;             ///< mesh cycles before recording (whole revolutions with a crack)
   int record_cycles = 40;            ///< mesh cycles recorded (at least two revolutions with a crack)
@@ -44,6 +48,8 @@ struct Spur6Parameters {
   double mean_mesh_stiffness = 0, mesh_damping = 0;
   double A = 0, C = 0, E = 0, T1T2 = 0, pbt = 0, contact_speed = 0;
   double crack_mouth = 0;  ///< s where a pitch crack starts to act (the pinion's reference point)
+  double face_width = 0;   ///< b [m]
+  double backlash = 0;     ///< b [m] with contact loss on
   int z1 = 0;
 };
 
@@ -62,6 +68,9 @@ struct Spur6Result {
   std::vector<double> natural_frequencies;   ///< [Hz], mean-stiffness system, non-zero
   double mesh_frequency = 0.0;               ///< [Hz]
   double periodicity = 0.0;                  ///< max |δ(t) − δ(t − period)| / p2p over the last period
+  double contact_loss_fraction = 0.0;        ///< share of the recorded samples without mesh force
+  double back_contact_fraction = 0.0;        ///< share of the recorded samples on the back flanks
+  long contact_events = 0;                   ///< roots of the contact functions (restarts), whole run
   EnergyBalance energy;                      ///< over the recorded window
   long steps = 0, rhs_evaluations = 0;
   double seconds = 0.0;
@@ -79,6 +88,9 @@ class Spur6Dynamics {
   [[nodiscard]] double pair_stiffness(double s, bool cracked_tooth = false, bool crack_acting = false) const;
   /// Size of the state: 6 coordinates, 6 rates, 3 work accumulators (damping, friction, stiffness).
   static constexpr std::size_t state_size = 15;
+  /// The contact functions of docs/dynamics-model.md, "Contact loss": δ, δ + b, δ + τδ̇,
+  /// δ + b + τδ̇ (τ = c_m/k̄); empty without backlash.
+  [[nodiscard]] std::vector<double> contact_functions(const double* y) const;
   /// dy/dt of the page's equations for the pair set of the interval holding t_mid.
   void derivative(double t, double t_mid, const double* y, double* dydt) const;
   /// The static state of docs/dynamics-model.md.
@@ -91,6 +103,9 @@ class Spur6Dynamics {
   struct MeshState {
     double force = 0.0, friction = 0.0, moment1 = 0.0, moment2 = 0.0, delta = 0.0, delta_rate = 0.0;
     double stiffness = 0.0, stiffness_rate = 0.0, damping = 0.0;  ///< Σk_j, Σdk_j/dt, Σc_j
+    double penetration = 0.0;      ///< p: δ (linear mesh), or the overlap of the flanks in contact
+    double mesh_dissipation = 0.0; ///< power of the mesh damping, (F_m − Σk_j·p)·δ̇
+    bool back = false;             ///< on the back flanks
   };
   [[nodiscard]] MeshState mesh(double t, double t_mid, const double* y) const;
   [[nodiscard]] std::vector<double> switch_times(double t0, double t1) const;
@@ -99,6 +114,7 @@ class Spur6Dynamics {
   const geometry::GearPairGeometry& geometry_;
   Spur6Options options_;
   Spur6Parameters p_;
+  PairFriction friction_;
   stiffness::PairStiffness pair_;
   std::optional<stiffness::CubicSpline> healthy_;  ///< healthy pair; a cracked pair is integrated directly
 };

@@ -116,21 +116,11 @@ double MeshLoss::iso14179_coefficient() const {
 }
 
 double MeshLoss::friction(const lubricant::ContactState& c) const {
-  switch (options_.friction_model) {
-    case FrictionModel::constant: return options_.friction_coefficient;
-    case FrictionModel::iso14179: return iso_mu_;
-    case FrictionModel::benedict_kelley:
-      return lubricant::benedict_kelley(lubricant::BenedictKelleyInputs::from_si(c));
-    case FrictionModel::xu_kahraman: return lubricant::xu_kahraman(lubricant::XuKahramanInputs::from_si(c));
-    case FrictionModel::mixed: {
-      const double sigma = lubricant::composite_rms_roughness(operating_.roughness_Ra[0], operating_.roughness_Ra[1]);
-      const double share = sigma > 0.0 ? lubricant::fluid_load_share(c.film_thickness / sigma) : 1.0;
-      return lubricant::mixed_friction(share, lubricant::xu_kahraman(lubricant::XuKahramanInputs::from_si(c)),
-                                       options_.boundary_friction);
-    }
-    case FrictionModel::ehl: return ehl_friction_->coefficient(c);
-  }
-  return options_.friction_coefficient;
+  if (options_.friction_model == FrictionModel::ehl) return ehl_friction_->coefficient(c);
+  return lubricant::friction_coefficient(
+      {options_.friction_model, options_.friction_coefficient, options_.boundary_friction,
+       lubricant::composite_rms_roughness(operating_.roughness_Ra[0], operating_.roughness_Ra[1]), iso_mu_},
+      c);
 }
 
 // One contact point at s carrying w [N/m] over a line of length l [m].

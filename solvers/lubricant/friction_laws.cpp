@@ -112,6 +112,22 @@ double mixed_friction(double fluid_share, double mu_full_film, double mu_boundar
   return fluid_share * mu_full_film + (1.0 - fluid_share) * mu_boundary;
 }
 
+double friction_coefficient(const FrictionLaw& law, const ContactState& c) {
+  switch (law.model) {
+    case FrictionModel::constant: return law.constant_mu;
+    case FrictionModel::iso14179: return law.iso14179_mu;
+    case FrictionModel::benedict_kelley: return benedict_kelley(BenedictKelleyInputs::from_si(c));
+    case FrictionModel::xu_kahraman: return xu_kahraman(XuKahramanInputs::from_si(c));
+    case FrictionModel::mixed: {
+      const double share = law.composite_roughness > 0.0 ? fluid_load_share(c.film_thickness / law.composite_roughness) : 1.0;
+      return mixed_friction(share, xu_kahraman(XuKahramanInputs::from_si(c)), law.boundary_mu);
+    }
+    case FrictionModel::ehl: break;
+  }
+  throw InputError("friction.model = \"ehl\": no closed-form coefficient; allowed are \"constant\", \"xu_kahraman\", "
+                   "\"benedict_kelley\", \"iso14179\", \"mixed\"");
+}
+
 FrictionModel parse_friction_model(const std::string& name, const std::string& key) {
   for (const auto m : {FrictionModel::constant, FrictionModel::xu_kahraman, FrictionModel::benedict_kelley,
                        FrictionModel::iso14179, FrictionModel::mixed, FrictionModel::ehl})

@@ -116,4 +116,18 @@ enum class FrictionModel { constant, xu_kahraman, benedict_kelley, iso14179, mix
 FrictionModel parse_friction_model(const std::string& name, const std::string& key);
 std::string friction_model_name(FrictionModel model);
 
+/// A chosen law with what it needs beyond the contact state.
+struct FrictionLaw {
+  FrictionModel model = FrictionModel::constant;
+  double constant_mu = 0.05;          ///< μ of the constant law
+  double boundary_mu = 0.1;           ///< μ_BL of the mixed law
+  double composite_roughness = 0.0;   ///< σ = composite_rms_roughness(Ra1, Ra2) of the mixed law [m]
+  double iso14179_mu = 0.0;           ///< μ_mZ of the pair (iso14179_mean at its pitch point)
+};
+
+/// μ of `law` at the contact `c` (the film thickness is read by the mixed law only; with
+/// σ = 0 the mixed law is the full-film Xu–Kahraman coefficient). InputError for the "ehl"
+/// model, which has no closed form.
+double friction_coefficient(const FrictionLaw& law, const ContactState& c);
+
 }  // namespace gearbench::lubricant

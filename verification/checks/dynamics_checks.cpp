@@ -9,6 +9,7 @@
 
 #include "check_registry.h"
 #include "dynamics_case.h"
+#include "dynamics_reference.h"
 #include "dynamics/spur6_dynamics.h"
 #include "ode/spur6_rk4.h"
 
@@ -84,33 +85,6 @@ const RegisterCheck energy_balance(CheckSpec{
 
 // --- Against the independent RK4 ---------------------------------------------------------------
 
-/// The reference's plain parameters from the production model; the pair stiffness is the
-/// shared input (the energy method, checked on its own above), the equations are not.
-reference::Spur6Parameters reference_parameters(const Spur6Dynamics& d) {
-  const auto& p = d.parameters();
-  reference::Spur6Parameters r{};
-  r.m1 = p.m1;
-  r.m2 = p.m2;
-  r.I1 = p.I1;
-  r.I2 = p.I2;
-  r.rb1 = p.rb1;
-  r.rb2 = p.rb2;
-  r.k1 = r.k2 = p.k_bearing;
-  r.c1 = r.c2 = p.c_bearing;
-  r.T1 = p.T1;
-  r.mu = p.mu;
-  r.zeta_mesh = p.zeta_mesh;
-  r.mean_mesh_stiffness = p.mean_mesh_stiffness;
-  r.A = p.A;
-  r.C = p.C;
-  r.E = p.E;
-  r.T1T2 = p.T1T2;
-  r.pbt = p.pbt;
-  r.contact_speed = p.contact_speed;
-  r.pair_stiffness = [&d](double s) { return d.pair_stiffness(s); };
-  return r;
-}
-
 // Ten mesh cycles from the static state, healthy, μ = 0.06: CVODE (Adams, rtol 1e-8) against
 // RK4 with 4096 steps per mesh cycle (order 4, error ~1e-10 of the response).
 const RegisterCheck rk4_agreement(CheckSpec{
@@ -127,7 +101,7 @@ const RegisterCheck rk4_agreement(CheckSpec{
       o.record_cycles = 10;
       const Spur6Dynamics d(g, c.materials, c.operating, o);
       const auto r = d.solve();
-      const auto p = reference_parameters(d);
+      const auto p = spur6_reference(d);
       const double T_mesh = p.pbt / p.contact_speed;
       reference::Spur6State y0{};
       const auto s = d.static_state();
@@ -155,7 +129,7 @@ const RegisterCheck eigen_vs_fft(CheckSpec{
       const auto c = seed003(ctx);
       const geometry::GearPairGeometry g(c.pair);
       const Spur6Dynamics d(g, c.materials, c.operating, Spur6Options{});
-      auto p = reference_parameters(d);
+      auto p = spur6_reference(d);
       const double kbar = p.mean_mesh_stiffness, A = p.A, E = p.E, B = p.E - p.pbt, D = p.A + p.pbt;
       p.pair_stiffness = [=](double s) {
         if (s < B) return kbar * (s - A) / (B - A);

@@ -8,6 +8,7 @@
 
 #include "check_registry.h"
 #include "dynamics_case.h"
+#include "dynamics_reference.h"
 #include "model/errors.h"
 #include "dynamics/herringbone12_dynamics.h"
 #include "dynamics/spur6_dynamics.h"
@@ -76,20 +77,6 @@ const RegisterCheck herringbone_reduces_to_spur(CheckSpec{
       return CheckValue{worst / s.te.peak_to_peak, 0.0,
                         {{"halves_difference", halves / s.te.peak_to_peak}, {"samples", s.time.size()}}};
     }});
-
-/// The reference's plain parameters from the production model; the mesh excitation of a
-/// half (k_m, χ) is the shared input, the equations are not.
-reference::Herringbone12Parameters herringbone_reference(const dynamics::Herringbone12Dynamics& d) {
-  const auto& p = d.parameters();
-  const auto& mesh = d.mesh();
-  return {p.m_p, p.m_g, p.I_p, p.I_g, p.R_p, p.R_g, p.beta_b, p.k_radial, p.c_radial, p.k_axial_p, p.c_axial_p,
-          p.k_axial_g, p.c_axial_g, p.k_groove, p.c_groove, p.k_twist, p.c_twist, p.T_p, p.T_g,
-          p.mean_mesh_stiffness, p.mesh_damping, p.impact_force, p.impact_duration, p.period, p.clock_offset,
-          [&mesh](double tau) {
-            const auto m = mesh.at(tau, tau);
-            return reference::HalfMeshValue{m.stiffness, m.chi_pinion, m.chi_wheel};
-          }};
-}
 
 // Seed 000 pair with friction, mesh-in impacts and the right half a quarter cycle behind:
 // 10 mesh cycles from the static state, CVODE (Adams, rtol 1e-8) against RK4 at 2048 steps a cycle.

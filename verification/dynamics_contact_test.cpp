@@ -1,0 +1,150 @@
+// Tests of the friction laws and the contact loss inside the dynamics models
+// (docs/dynamics-model.md, "Friction laws" and "Contact loss"): the reference's own
+// Benedict–Kelley against the production law, the ISO and mixed laws, the helical arms'
+// interpolation between load levels, a heavily loaded pair whose contact is never
+// lost (no root fires, the result is the linear model's bit for bit), and the herringbone
+// pair whose mesh-in impact pulls its mesh force below zero unless contact may be lost.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "checks/dynamics_reference.h"
+#include "dynamics/pair_friction.h"
+#include "efficiency/mesh_loss.h"
+#include "support/test_support.h"
+
+namespace gearbench {
+namespace {
+
+using verification::spur6_reference;
+
+const std::array<model::Material, 2> steel{model::Material{212e9, 0.289, 7850}, model::Material{212e9, 0.289, 7850}};
+// Seed 003's operating point (cases/seed003_spur_dynamics.json) with flanks of Ra 0.4 µm.
+const model::OperatingPoint seed003_operating{996.0 * std::numbers::pi / 30.0, 50.0, 313.15, {0.4e-6, 0.4e-6}};
+// The oil of cases/seed000_herringbone_dynamics.json.
+const model::Lubricant oil{0.044, 22e-9, {}, {}, {}, {}, {}, {}};
+
+// The production law (solvers/lubricant through dynamics::PairFriction) and the reference's
+// own Benedict–Kelley, coded from the published imperial form, along the path and over two
+// decades of load. They differ by the SI constant only: 29.66 against 3.17e8·0.0254³/175.127
+// = 29.6626, a factor 1.00009 in the logarithm's argument, i.e. 5e-7 in μ.
+TEST(DynamicsFriction, ReferenceBenedictKelleyMatchesTheProductionLaw) {
+  const geometry::GearPairGeometry g(testing_support::seed003_pair());
+  dynamics::FrictionLawOptions law;
+  law.model = lubricant::FrictionModel::benedict_kelley;
+  law.lubricant = oil;
+  const dynamics::PairFriction production(g, steel, seed003_operating, 0.06, law);
+  dynamics::Spur6Options o;
+  o.friction_law = law;
+  const dynamics::Spur6Dynamics d(g, steel, seed003_operating, o);
+  auto p = spur6_reference(d);
+  p.benedict_kelley = reference::Spur6Parameters::BenedictKelley{oil.viscosity, 0.4e-6, g.pair().face_width};
+  double worst = 0.0, smallest = 1.0, largest = 0.0;
+  for (int i = 0; i <= 40; ++i) {
+    const double s = p.A + (p.E - p.A) * i / 40.0;
+    for (const double w : {1e4, 1e5, 1e6}) {
+      const double mu = production.coefficient(s, w);
+      worst = std::max(worst, std::abs(mu - reference::spur6_benedict_kelley(p, s, w)));
+      smallest = std::min(smallest, mu);
+      largest = std::max(largest, mu);
+    }
+  }
+  std::printf("[ measured ] Benedict–Kelley μ from %.4f to %.4f on the path; largest difference %.2e\n", smallest,
+              largest, worst);
+  EXPECT_LT(worst, 2e-6);
+  EXPECT_LT(smallest, largest);  // the law is not a constant along the path
+}
+
+// ISO/TR 14179-2 is a mean coefficient of the pair (the efficiency solver's, at its nominal
+// load): the same μ at every contact and load. The mixed law blends the full-film
+// Xu–Kahraman coefficient with μ_BL by the fluid share of the film: it lies between them.
+TEST(DynamicsFriction, IsoIsTheMeanCoefficientAndMixedLiesBetweenItsLaws) {
+  const geometry::GearPairGeometry g(testing_support::seed003_pair());
+  auto with = [&](lubricant::FrictionModel model) {
+    dynamics::FrictionLawOptions law;
+    law.model = model;
+    law.lubricant = oil;
+    return dynamics::PairFriction(g, steel, seed003_operating, 0.06, law);
+  };
+  efficiency::MeshLossOptions iso_options;
+  iso_options.friction_model = lubricant::FrictionModel::iso14179;
+  const double iso_mu =
+      efficiency::MeshLoss(g, seed003_operating, iso_options, {steel, oil}).iso14179_coefficient();
+  const auto iso = with(lubricant::FrictionModel::iso14179), mixed = with(lubricant::FrictionModel::mixed),
+             full_film = with(lubricant::FrictionModel::xu_kahraman);
+  const auto& path = g.path();
+  for (const double s : {path.A, 0.5 * (path.A + path.C), 0.5 * (path.C + path.E), path.E})
+    for (const double w : {1e3, 1e5, 1e6}) {
+      EXPECT_EQ(iso.coefficient(s, w), iso_mu);
+      const double lo = std::min(full_film.coefficient(s, w), 0.1), hi = std::max(full_film.coefficient(s, w), 0.1);
+      EXPECT_GE(mixed.coefficient(s, w), lo);
+      EXPECT_LE(mixed.coefficient(s, w), hi);
+    }
+}
+
+// The helical arms under a friction law are interpolated linearly between the load levels
+// (l/4)·F_nom. A second half mesh whose nominal force is 1.125·F_nom has a table at exactly
+// that force (its level 4): against it the interpolation midway between levels 4 and 5 of the
+// first shows its error. For μ ∝ w^0.52 (Xu–Kahraman: P_h^1.03 with P_h ∝ √w) the midpoint
+// error of linear interpolation on [1, 1.25] is 1.6e-3 of the value; twice that, 3e-3 of the
+// largest arm, leaves room for the law's exponential terms in P_h.
+TEST(DynamicsFriction, HelicalArmsInterpolateBetweenLoadLevels) {
+  model::GearPair pair;
+  pair.teeth = {17, 44};
+  pair.normal_module = 6e-3;
+  pair.normal_pressure_angle = 18.334317 * std::numbers::pi / 180.0;
+  pair.helix_angle = 24.43 * std::numbers::pi / 180.0;
+  pair.face_width = 55e-3;
+  pair.herringbone = model::Herringbone{58e-3};
+  const geometry::GearPairGeometry g(pair);
+  const std::array<model::Material, 2> s0{model::Material{206e9, 0.3, 7850}, model::Material{206e9, 0.3, 7850}};
+  dynamics::HalfMeshOptions o;
+  o.slices = 40;
+  o.positions = 180;
+  o.friction_law.model = lubricant::FrictionModel::xu_kahraman;
+  o.friction_law.lubricant = oil;
+  model::OperatingPoint operating{2000.0 * std::numbers::pi / 30.0, 309.09, 313.15, {0.4e-6, 0.4e-6}};
+  const double nominal = operating.pinion_torque / 2.0 / (g.radii(0).base * std::cos(g.base_helix_angle()));
+  const dynamics::HalfMesh coarse(g, s0, operating, o);
+  operating.pinion_torque *= 1.125;
+  const dynamics::HalfMesh exact(g, s0, operating, o);
+  const double force = 1.125 * nominal;  // midway between levels 4 and 5 of `coarse`, level 4 of `exact`
+  double worst = 0.0, largest = 0.0;
+  for (int i = 0; i < 100; ++i) {
+    const double t = coarse.period() * i / 100.0;
+    const auto a = coarse.arms(t, t, force), b = exact.arms(t, t, force);
+    worst = std::max({worst, std::abs(a[0] - b[0]), std::abs(a[1] - b[1])});
+    largest = std::max({largest, std::abs(b[0]), std::abs(b[1])});
+  }
+  std::printf("[ measured ] arms midway between load levels: largest deviation %.2e of the largest arm %.3e m\n",
+              worst / largest, largest);
+  EXPECT_GT(largest, 0.0);
+  EXPECT_LT(worst / largest, 3e-3);
+}
+
+// The seed 003 pair under its 50 N·m: the static deflection (~25 µm) dwarfs the dynamic
+// fluctuation, δ and δ + τδ̇ stay positive, no contact function has a root and the run with
+// a 100 µm backlash is the linear model's bit for bit (the root functions do not alter
+// CVODE's steps).
+TEST(DynamicsContactLoss, NoRootFiresUnderAHeavyLoadAndTheResultIsTheLinearOne) {
+  const geometry::GearPairGeometry g(testing_support::seed003_pair());
+  dynamics::Spur6Options o;
+  o.runup_cycles = 10;
+  o.record_cycles = 4;
+  const auto linear = dynamics::Spur6Dynamics(g, steel, seed003_operating, o).solve();
+  o.backlash = 100e-6;
+  const auto lossy = dynamics::Spur6Dynamics(g, steel, seed003_operating, o).solve();
+  std::printf("[ measured ] heavy load: %ld roots, δ from %.3e to %.3e m\n", lossy.contact_events,
+              lossy.te.mean - 0.5 * lossy.te.peak_to_peak, lossy.te.mean + 0.5 * lossy.te.peak_to_peak);
+  EXPECT_EQ(lossy.contact_events, 0);
+  EXPECT_EQ(lossy.contact_loss_fraction, 0.0);
+  EXPECT_EQ(lossy.transmission_error, linear.transmission_error);
+  EXPECT_EQ(lossy.mesh_force, linear.mesh_force);
+  EXPECT_EQ(lossy.steps, linear.steps);
+}
+
+}  // namespace
+}  // namespace gearbench
