@@ -366,21 +366,41 @@ TEST(Cli, OilFilmStiffnessDoubleInvoluteRunsAndValidates) {
 }
 
 /// Starts gearbench with `args`, sends SIGINT after `delay`, and returns its exit status.
-int interrupt_gearbench(const std::vector<std::string>& args, std::chrono::milliseconds delay) {
+/// Runs gearbench with `args`, sends SIGINT once its stderr shows `marker` (so the signal
+/// lands in the middle of the work whatever the machine's load, not at a fixed delay), and
+/// returns its exit code (−1 if it did not exit normally, −2 if the marker never came).
+int interrupt_gearbench(const std::vector<std::string>& args, const std::string& marker) {
+  int pipe_fd[2];
+  if (::pipe(pipe_fd) != 0) return -3;
   const pid_t pid = ::fork();
   if (pid == 0) {
     std::vector<char*> argv{const_cast<char*>(GEARBENCH_EXE)};
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
     ::freopen("/dev/null", "w", stdout);
-    ::freopen("/dev/null", "w", stderr);
+    ::dup2(pipe_fd[1], STDERR_FILENO);
+    ::close(pipe_fd[0]);
+    ::close(pipe_fd[1]);
     ::execv(GEARBENCH_EXE, argv.data());
     ::_exit(127);
   }
-  std::this_thread::sleep_for(delay);
-  ::kill(pid, SIGINT);
+  ::close(pipe_fd[1]);
+  std::string seen;
+  char buffer[256];
+  bool found = false;
+  while (!found) {
+    const ssize_t n = ::read(pipe_fd[0], buffer, sizeof buffer);
+    if (n <= 0) break;
+    seen.append(buffer, static_cast<std::size_t>(n));
+    found = seen.find(marker) != std::string::npos;
+  }
+  if (found) ::kill(pid, SIGINT);
+  while (::read(pipe_fd[0], buffer, sizeof buffer) > 0) {
+  }  // drain what it says on its way out, so that it never writes into a closed pipe
+  ::close(pipe_fd[0]);
   int status = 0;
   ::waitpid(pid, &status, 0);
+  if (!found) return -2;
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
@@ -389,12 +409,12 @@ int interrupt_gearbench(const std::vector<std::string>& args, std::chrono::milli
 TEST(Cli, InterruptWritesNothing) {
   const auto out = temp_path("interrupted_run.json");
   EXPECT_EQ(interrupt_gearbench({"run", GEARBENCH_SOURCE_DIR "/cases/seed004_transient_ehl.json", "-o", out.string()},
-                                std::chrono::milliseconds(700)), 130);
+                                "running..."), 130);
   EXPECT_FALSE(fs::exists(out));
 
   const auto dir = temp_path("interrupted_verify");
   fs::create_directories(dir);
-  EXPECT_EQ(interrupt_gearbench({"verify", "--out", dir.string()}, std::chrono::milliseconds(1500)), 130);
+  EXPECT_EQ(interrupt_gearbench({"verify", "--out", dir.string()}, "[2/"), 130);
   EXPECT_TRUE(fs::is_empty(dir)) << "an interrupted verify left files in " << dir;
   fs::remove_all(dir);
 }
