@@ -57,18 +57,24 @@ const RegisterCheck film_min_at_A(CheckSpec{
                         {{"lambda_GF", lambda_series(a.gear)}, {"S_lambda", a.S_lambda}}};
     }});
 
+// The seed describes the jump for its fig. 1, the ISO/TR 15144-1 Annex B example, whose
+// flash temperatures exceed 100 K away from C. The wind gear under the planetary reading of
+// its load (the case description) has flash temperatures of 10–41 K, and its film at C stands
+// only ~6 % above B and D: recorded as missed, with that reason.
 const RegisterCheck film_jump_at_C(CheckSpec{
     .id = "seed001.iso15144.film_jump_at_C", .section = section, .solver = solver,
     .reference = "seed 001 (ISO film at C markedly above the neighbouring points: no flash temperature)",
-    .quantity = "1 if h_C exceeds the films at B and D by more than 10 %", .unit = "-", .tolerance = {0, 0},
-    .justification = "a yes/no statement of the paper; 10 % is well above rounding and well below "
-                     "the jump the paper describes (flash temperature 0 at C, >100 K elsewhere)",
+    .quantity = "h_C / max(h_B, h_D), a marked jump: 1.1 … 1.5", .unit = "-", .tolerance = {0.2, 0},
+    .justification = "the paper's statement is qualitative; 10–50 % above the neighbours counts as the jump it "
+                     "describes (flash temperature 0 at C, >100 K elsewhere in its fig. 1 example)",
     .tier = Tier::fast, .run = [](const CheckContext& ctx) {
       const auto a = seed_assessment(ctx);
       const auto& p = a.gear.points;
-      const double ratio = p[3].h / std::max(p[2].h, p[4].h);
-      return CheckValue{ratio > 1.1 ? 1.0 : 0.0, 1.0, {{"h_C_over_max_h_B_h_D", ratio}}};
-    }});
+      return CheckValue{p[3].h / std::max(p[2].h, p[4].h), 1.3,
+                        {{"flash_temperature_B_K", p[2].flash_temperature},
+                         {"flash_temperature_D_K", p[4].flash_temperature}}};
+    },
+    .recorded = 1.0632, .recorded_tolerance = 0.01});
 
 // The paper's test-gear pressure at A came from method A (a loaded-contact analysis, with
 // Kissling's data); method B's load sharing of an unmodified spur pair (X_A = 1/3) at the
@@ -167,12 +173,12 @@ const RegisterSection report_section(SectionSpec{
                        "leaves open are in the case description). Wind gear: μ_m = {:.4f}, H_V = {:.4f}, "
                        "θ_M = {:.1f} K, ε_α = {:.4f}, ε_β = {:.4f}.\n\n{}\nReference test (FZG C-GF/8.3/90, SKS 10, "
                        "same oil): μ_m = {:.4f}, θ_M = {:.1f} K.\n\n{}\nλ_GF,min = {:.4f} at {}, λ_GFT = {:.4f}, "
-                       "λ_GFP = 1.4·λ_GFT = {:.4f}, **S_λ = {:.4f}**. The pressures follow from the seed's table "
-                       "read literally (2470 kW at 20 r/min on the pinion, as cases/seed001_wind_geometry.json): "
-                       "p_dyn ≈ {:.0f} MPa at C is far above what a case-hardened flank carries, which suggests the "
-                       "power and speed are the gearbox input (planet carrier) and the mesh load is shared among "
-                       "the planets; the seed does not say, so the literal reading is kept and flagged. The paper "
-                       "gives the ISO series only in its figures 1–3.",
+                       "λ_GFP = 1.4·λ_GFT = {:.4f}, **S_λ = {:.4f}**. The load is the planetary reading of the seed's "
+                       "table (p_dyn = {:.0f} MPa at C): read literally, 2470 kW at 20 r/min on one 21/35 mesh "
+                       "gives p_dyn ≈ 3.7 GPa at C and 4.9 GPa at A (λ_GF,min = 0.0066, S_λ = 0.040), beyond what "
+                       "a case-hardened flank carries, so the power and speed are taken as the stage input (planet "
+                       "carrier) with three planets and a fixed 91-tooth ring (gearbench's assumptions; the case "
+                       "description has the numbers). The paper gives the ISO series only in its figures 1–3.",
                        a.gear.friction_coefficient, a.gear.loss_factor, a.gear.bulk_temperature,
                        a.gear.contact_ratio_transverse, a.gear.contact_ratio_overlap, point_table(a.gear),
                        a.reference_test.friction_coefficient, a.reference_test.bulk_temperature,
