@@ -7,6 +7,7 @@
 #include "ehl/thermal_mesh_path.h"
 #include "model/case_reader.h"
 #include "model/json_reader.h"
+#include "support/thermal_fixtures.h"
 
 namespace {
 
@@ -19,34 +20,9 @@ model::ThermalPathCase seed001() {
 }
 
 /// The sliding contact of cases/tehl_point_sliding.json (SRR 0.5).
-ehl::LineContactData sliding_contact() {
-  ehl::LineContactData c;
-  c.reduced_radius = 0.02;
-  c.load_per_length = 3e5;
-  c.reduced_modulus = 2.2e11;
-  c.u1 = 2.5;
-  c.u2 = 1.5;
-  return c;
-}
-
-model::ThermalLubricant mineral_oil() {
-  model::ThermalLubricant d;
-  d.density_15C = 870.0;
-  d.pressure_viscosity = 20e-9;
-  d.viscosity = 0.05;
-  d.temperature_viscosity = 0.03;
-  d.thermal_conductivity = 0.14;
-  d.specific_heat = 2000.0;
-  return d;
-}
-
-model::ThermalSolids steel() {
-  model::ThermalSolids s;
-  s.conductivity = {46.0, 46.0};
-  s.specific_heat = {470.0, 470.0};
-  s.density = {7850.0, 7850.0};
-  return s;
-}
+ehl::LineContactData sliding_contact() { return testing_support::sliding_contact(0.5); }
+using testing_support::mineral_oil;
+model::ThermalSolids steel() { return testing_support::steel_solids(); }
 
 void BM_TehlPoint(benchmark::State& state) {
   const lubricant::ThermalRheology rheology(mineral_oil(), 313.15);

@@ -11,22 +11,14 @@
 #include "lubricant/rheology.h"
 #include "lubricant/thermal_rheology.h"
 #include "model/errors.h"
+#include "support/thermal_fixtures.h"
 
 namespace gearbench::ehl {
 namespace {
 
 constexpr double T0 = 313.15;  // inlet temperature [K]
 
-model::ThermalLubricant roelands_oil() {
-  model::ThermalLubricant d;
-  d.density_15C = 870.0;
-  d.pressure_viscosity = 20e-9;
-  d.viscosity = 0.05;
-  d.temperature_viscosity = 0.03;
-  d.thermal_conductivity = 0.14;
-  d.specific_heat = 2000.0;
-  return d;
-}
+model::ThermalLubricant roelands_oil() { return testing_support::mineral_oil(); }
 
 model::ThermalLubricant walther_oil() {
   auto d = roelands_oil();
@@ -37,19 +29,10 @@ model::ThermalLubricant walther_oil() {
   return d;
 }
 
-model::ThermalSolids steel() {
-  model::ThermalSolids s;
-  s.conductivity = {46.0, 46.0};
-  s.specific_heat = {470.0, 470.0};
-  s.density = {7850.0, 7850.0};
-  return s;
-}
+model::ThermalSolids steel() { return testing_support::steel_solids(); }
 
 LineContactData contact(double u1, double u2) {
-  LineContactData c;
-  c.reduced_radius = 0.02;
-  c.load_per_length = 3e5;
-  c.reduced_modulus = 2.2e11;
+  auto c = testing_support::sliding_contact(0.0);
   c.u1 = u1;
   c.u2 = u2;
   return c;

@@ -163,6 +163,20 @@ const std::vector<double>& CvodeIntegrator::advance(double t_out, double stop) {
   return y_;
 }
 
+const std::vector<double>& CvodeIntegrator::advance_across_roots(double t_out, double stop, double tolerance,
+                                                                 RootCrossing& work) {
+  advance(t_out, stop);
+  while (at_root_) {
+    ++work.events;
+    work.steps += steps();
+    work.rhs_evaluations += rhs_evaluations();
+    reset(t_, y_);
+    if (t_ > t_out - tolerance) break;  // a root on the target: y is y(t_out)
+    advance(t_out, stop);
+  }
+  return y_;
+}
+
 long CvodeIntegrator::steps() const {
   long n = 0;
   check_flag(CVodeGetNumSteps(handles_->cvode, &n), "CVodeGetNumSteps");

@@ -36,6 +36,14 @@ class CvodeIntegrator {
   /// Integrates to t_out exactly, never past `stop` (a discontinuity of f), or to the first
   /// root of the root functions before t_out; returns y there (at time()).
   const std::vector<double>& advance(double t_out, double stop);
+  /// Roots passed and work done by the restarted segments of advance_across_roots().
+  struct RootCrossing {
+    long events = 0, steps = 0, rhs_evaluations = 0;
+  };
+  /// Integrates to t_out exactly (never past `stop`), restarting at every root on the way,
+  /// where the right-hand side kinks or jumps (contact loss); a root within `tolerance` of
+  /// t_out ends it there. Returns y(t_out).
+  const std::vector<double>& advance_across_roots(double t_out, double stop, double tolerance, RootCrossing& work);
   /// The time of the state advance() returned last.
   [[nodiscard]] double time() const { return t_; }
   /// Whether advance() stopped at a root.

@@ -411,15 +411,11 @@ Herringbone12Result Herringbone12Dynamics::solve() const {
     double reached = a;
     // To `target`, restarting where a contact function has a root (the force kinks or jumps).
     auto advance_once = [&](double target) {
-      y = integrator.advance(target, b);
-      while (integrator.at_root()) {
-        ++r.contact_events;
-        r.steps += integrator.steps();
-        r.rhs_evaluations += integrator.rhs_evaluations();
-        integrator.reset(integrator.time(), y);
-        if (integrator.time() > target - tiny) break;  // a root on the target: y is y(target)
-        y = integrator.advance(target, b);
-      }
+      CvodeIntegrator::RootCrossing work;
+      y = integrator.advance_across_roots(target, b, tiny, work);
+      r.contact_events += work.events;
+      r.steps += work.steps;
+      r.rhs_evaluations += work.rhs_evaluations;
     };
     // Long stretches go in whole mesh cycles (CVODE's step limit is per call).
     auto advance_to = [&](double target) {

@@ -11,6 +11,7 @@
 #include "ehl/thermal_mesh_path.h"
 #include "model/case_reader.h"
 #include "model/json_reader.h"
+#include "support/thermal_fixtures.h"
 #include "tehl_micropitting.h"
 
 namespace gearbench::verification {
@@ -23,38 +24,10 @@ const std::string seed_section = "Seed 001: thermal EHL along the path of contac
 const std::string solver = "ehl.thermal_line_contact";
 
 // ---- a sliding steel contact with a mineral oil (cases/tehl_point_sliding.json) -----------
-constexpr double inlet_temperature = 313.15;  // [K]
-constexpr double beta = 0.03;                 // viscosity–temperature coefficient [1/K]
-
-model::ThermalLubricant mineral_oil() {
-  model::ThermalLubricant d;
-  d.density_15C = 870.0;
-  d.pressure_viscosity = 20e-9;
-  d.viscosity = 0.05;
-  d.temperature_viscosity = beta;
-  d.thermal_conductivity = 0.14;
-  d.specific_heat = 2000.0;
-  return d;
-}
-
-model::ThermalSolids steel() {
-  model::ThermalSolids s;
-  s.conductivity = {46.0, 46.0};
-  s.specific_heat = {470.0, 470.0};
-  s.density = {7850.0, 7850.0};
-  return s;
-}
-
-/// Mean speed 2 m/s, the given slide-to-roll ratio (u1 − u2)/ū.
-LineContactData sliding_contact(double srr) {
-  LineContactData c;
-  c.reduced_radius = 0.02;
-  c.load_per_length = 3e5;
-  c.reduced_modulus = 2.2e11;
-  c.u1 = 2.0 * (1.0 + 0.5 * srr);
-  c.u2 = 2.0 * (1.0 - 0.5 * srr);
-  return c;
-}
+constexpr double inlet_temperature = testing_support::mineral_oil_inlet_temperature;
+constexpr double beta = testing_support::mineral_oil_beta;
+using testing_support::mineral_oil;
+using testing_support::sliding_contact;
 
 ThermalEhlResult solve_sliding(double srr, int levels = 5, int film_nodes = 10, bool heat = true) {
   const lubricant::ThermalRheology rheology(mineral_oil(), inlet_temperature);
@@ -62,7 +35,7 @@ ThermalEhlResult solve_sliding(double srr, int levels = 5, int film_nodes = 10, 
   o.grid.levels = levels;
   o.film.film_nodes = film_nodes;
   o.film.shear_heating = o.film.compression = heat;
-  return ThermalLineContact(sliding_contact(srr), rheology, steel(), o).solve();
+  return ThermalLineContact(sliding_contact(srr), rheology, testing_support::steel_solids(), o).solve();
 }
 
 const std::vector<double> srr_series{0.0, 0.25, 0.5, 1.0, 1.5};
