@@ -243,9 +243,10 @@ std::vector<const PerfChange*> PerfHistory::latest_regressions() const {
 
 namespace {
 std::string describe(const PerfChange& c, const std::vector<PerfRun>& runs) {
-  const auto [unit, scale] = time_unit(std::max(c.median_before, c.median_after));
+  // A plain pair, not a structured binding: clang 14 (the fuzz preset) cannot capture those.
+  const auto unit_scale = time_unit(std::max(c.median_before, c.median_after));
   auto value = [&](double v) {
-    return c.ratio ? fmt::format("{:.4g}", v) : fmt::format("{:.4g} {}", v * scale, unit);
+    return c.ratio ? fmt::format("{:.4g}", v) : fmt::format("{:.4g} {}", v * unit_scale.second, unit_scale.first);
   };
   return fmt::format("| `{}` | {} | {} → {} | {} → {} | {:+.1f} % | {} | {} |\n", c.name,
                      c.ratio ? "ratio" : "time", runs[c.before].commit_label(), runs[c.after].commit_label(),
