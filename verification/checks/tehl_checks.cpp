@@ -389,14 +389,19 @@ void add_micropitting_note(const CheckContext& ctx, reports::Report& report) {
       "reference film of the FZG C-GF/8.3/90 test at SKS 10 (265.1 N·m, A): thermal EHL {:.4f} µm at "
       "p_H {:.0f} MPa (λ_GFP {:.3f}), ISO λ_GFP {:.3f}; the seed's 1476.2 MPa at the test gear's A comes from "
       "its method A (LTCA), method B's load share 1/3 gives the lower pressure. The thermal EHL films lie "
-      "above the ISO films at all seven points, where the seed has them below: ISO evaluates the inlet at the "
-      "bulk temperature θ_M = {:.1f} K (the oil and both solids at {:.1f} K in the thermal EHL, as the seed "
-      "states T0) and loads A and E with the buttressing factor 1.3 of helical gears; with the thermal EHL "
-      "inlet at θ_M instead, its film falls below ISO's from AB to DE and lies within 4 % of it at A and E "
-      "(measured once, 0.0815 against 0.0785 µm at A). Which temperature the seed's TEHL used for the solids "
-      "and the inlet beyond 'T0 = 363 K' is not stated.",
+      "above the ISO films at all seven points, where the seed has them below. At C, where neither has a flash "
+      "temperature, ISO's film is {:.0f} % below ours: ISO takes the inlet at the bulk temperature θ_M = {:.1f} K "
+      "(the thermal EHL uses the seed's T0 = {:.1f} K for the oil and both solids) and its Dowson–Higginson fit runs "
+      "3–5 % below this solver (the EHL regression checks). Away from C, ISO lowers its film by the sliding "
+      "parameter S_GF^0.22 ({:.2f} at A) of a flash temperature of {:.1f} K at A, from its friction coefficient "
+      "μ_m = {:.3f} on a uniform band source, and loads A and E with the helical buttressing factor 1.3; the "
+      "thermal EHL's own film heats by only {:.1f} K at A, its Newtonian shear dissipating less than ISO's μ_m "
+      "assumes. Which inlet and solid temperatures the seed's TEHL used beyond 'T0 = 363 K' is not stated.",
       rows, m.S_lambda, m.iso.S_lambda, m.reference_point.result.h_min * 1e6, m.reference_point.hertz_pressure * 1e-6,
-      m.lambda_GFP, m.iso.lambda_GFP, m.iso.gear.bulk_temperature, seed001(ctx).thermal.inlet_temperature)});
+      m.lambda_GFP, m.iso.lambda_GFP, 100.0 * (1.0 - m.iso.gear.points[3].h / run.path.points[3].result.h_min),
+      m.iso.gear.bulk_temperature, seed001(ctx).thermal.inlet_temperature,
+      std::pow(m.iso.gear.points[0].sliding_parameter, 0.22), m.iso.gear.points[0].flash_temperature,
+      m.iso.gear.friction_coefficient, run.path.points[0].result.temperature_rise_max)});
 }
 
 const RegisterSection micropitting_note(SectionSpec{.id = "seed001_tehl_micropitting", .tier = Tier::fast,
