@@ -18,12 +18,7 @@
 namespace gearbench::app {
 namespace {
 
-using model::Range;
 using nlohmann::json;
-
-double read_inlet_temperature(model::ObjectReader& root) {
-  return root.number("inlet_temperature_K", {200.0, 600.0}, "K");
-}
 
 ConvergenceError not_converged(const ehl::ThermalEhlResult& r, const json& out) {
   return ConvergenceError(fmt::format("thermal EHL did not converge: {}", r.summary()), out.dump(2));
@@ -34,7 +29,7 @@ json run_tehl_point(const json& case_json) {
   root.string("kind");
   root.optional_string("description");
   const auto contact = read_line_contact(root);
-  const double T0 = read_inlet_temperature(root);
+  const double T0 = model::read_inlet_temperature(root);
   const auto options = read_thermal_options(root);
   const auto lubricant = model::read_thermal_lubricant(root.object("lubricant"));
   const auto solids = model::read_thermal_solids(root.object("solids"));

@@ -141,6 +141,8 @@ LoadFactors read_load_factors(ObjectReader f) {
   return k;
 }
 
+double read_inlet_temperature(ObjectReader& root) { return root.number("inlet_temperature_K", {200.0, 600.0}, "K"); }
+
 ThermalPathCase read_thermal_path_case(ObjectReader& root) {
   ThermalPathCase c;
   c.gear_pair = read_gear_pair(root.object("gear_pair"));
@@ -151,7 +153,7 @@ ThermalPathCase read_thermal_path_case(ObjectReader& root) {
   if (root.has("load_factors")) c.load_factors = read_load_factors(root.object("load_factors"));
   c.lubricant = read_thermal_lubricant(root.object("lubricant"));
   c.solids = read_thermal_solids(root.object("solids"));
-  c.inlet_temperature = root.number("inlet_temperature_K", {200.0, 600.0}, "K");
+  c.inlet_temperature = read_inlet_temperature(root);
   c.load_sharing = root.optional_string("load_sharing", {"iso", "equal"}).value_or("iso");
   return c;
 }

@@ -27,6 +27,9 @@ ThermalSolids read_thermal_solids(ObjectReader section);
 /// "load_factors": {"K_A", "K_v", "K_H_alpha", "K_H_beta"}, each in [1, 10], default 1.
 LoadFactors read_load_factors(ObjectReader section);
 
+/// "inlet_temperature_K" of a thermal EHL case: T0 [K] in [200, 600].
+double read_inlet_temperature(ObjectReader& root);
+
 /// The physical data of a thermal EHL path case (kind "tehl_path").
 struct ThermalPathCase {
   GearPair gear_pair;

@@ -292,11 +292,15 @@ const RegisterCheck s_lambda(CheckSpec{
                          {"reference_test_h_min_um_tehl", m.reference_point.result.h_min * 1e6}}};
     }});
 
+/// Hertz half-width of the point's contact, b = √(8wR/(πE′)).
+double half_width(const ThermalPathPoint& p) {
+  return std::sqrt(8.0 * p.contact.load_per_length * p.contact.reduced_radius /
+                   (std::acos(-1.0) * p.contact.reduced_modulus));
+}
+
 /// Position of the largest film temperature rise in Hertz half-widths of the point.
 double peak_position(const ThermalPathPoint& p) {
-  const double b = std::sqrt(8.0 * p.contact.load_per_length * p.contact.reduced_radius /
-                             (std::acos(-1.0) * p.contact.reduced_modulus));
-  return p.result.x_temperature_rise_max / b;
+  return p.result.x_temperature_rise_max / half_width(p);
 }
 
 const RegisterCheck temperature_peak(CheckSpec{
@@ -337,9 +341,7 @@ void add_seed_figures(const CheckContext& ctx, reports::Report& report) {
   for (const std::string name : {"A", "C"}) {
     const auto& p = point(r, name);
     const auto& t = p.result;
-    const double b = std::sqrt(8.0 * p.contact.load_per_length * p.contact.reduced_radius /
-                               (std::acos(-1.0) * p.contact.reduced_modulus));
-    const auto x = scaled(t.x, 1.0 / b);
+    const auto x = scaled(t.x, 1.0 / half_width(p));
     std::vector<double> mid, wall_a, wall_b;
     const std::size_t nz = t.zeta.size();
     const double T0 = seed001(ctx).thermal.inlet_temperature;
