@@ -340,7 +340,8 @@ const RegisterSection ehl_section(SectionSpec{
             const auto r = LineContactSolver(p, o).try_solve();
             const double U_sum = d.viscosity * (d.u1 + d.u2) / (d.reduced_modulus * d.reduced_radius);
             const double H = r.h_dpdx0 / d.reduced_radius / std::sqrt(U_sum);
-            rows += r.converged ? fmt::format(" {} cycles, H {:.3f} (Moes {:.3f}) |", r.cycles, H,
+            const std::string attempt = r.attempts > 1 ? fmt::format(" (attempt {})", r.attempts) : "";
+            rows += r.converged ? fmt::format(" {} cycles{}, H {:.3f} (Moes {:.3f}) |", r.cycles, attempt, H,
                                               reference::moes_H(M, L))
                                 : std::string(" **not converged** |");
           } catch (const std::exception&) {
@@ -351,13 +352,14 @@ const RegisterSection ehl_section(SectionSpec{
       }
       report.notes.push_back({section, fmt::format(
           "**Where the steady solver converges (issue 3).** The FAS solver (641 nodes, W(2,2) cycles, "
-          "under-relaxation 0.3/0.1, the fine film injected into the coarse film equation) is held "
-          "to 1e-8 on the scaled complementarity residual and the force balance within 60 cycles. "
-          "It converges on L ≤ 10 for every M of the table in 6–20 cycles, apart from M ≥ 300 at "
-          "L = 0 where the residual stalls near 1e-6. At L ≥ 15 it converges for some M only: the "
-          "coarse grids cannot hold the pressure spike (M = 20, L = 15 diverges), and W-cycles fall "
-          "back to V-cycles. Out of range means ᾱ = α·p_h > 40 with Barus (a viscosity ratio over "
-          "e^40), which the input validation refuses.\n\n"
+          "line relaxation with under-relaxation 0.3/0.2, the fine film injected into the coarse film "
+          "equation) is held to 1e-8 on the scaled complementarity residual and the force balance "
+          "within 60 cycles; a failed solve is repeated with ω_J 0.1, then point relaxation, then "
+          "V-cycles (the attempt is shown when it was not the first). Every point with L ≤ 15 "
+          "converges (check ehl.relaxation.map_L_le_15); M = 1000, L = 0 needs the second scheme. "
+          "At L = 20 some small-M points still fail: the coarse grids cannot hold the pressure "
+          "spike. Out of range means ᾱ = α·p_h > 40 with Barus (a viscosity ratio over e^40), "
+          "which the input validation refuses.\n\n"
           "| M | L = 0 | L = 5 | L = 10 | L = 15 | L = 20 |\n|---|---|---|---|---|---|\n{}", rows)});
     }});
 
