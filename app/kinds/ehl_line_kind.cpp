@@ -59,7 +59,7 @@ json result_json(const ehl::LineContactProblem& p, const ehl::EhlResult& r) {
       {"profile", {{"x_m", finite_vector(r.X, p.length_scale())},
                    {"p_Pa", finite_vector(r.P, p.pressure_scale())},
                    {"h_m", finite_vector(r.H, p.film_scale())}}},
-      {"diagnostics", {{"converged", r.converged}, {"cycles", r.cycles}, {"cycle_type", r.cycle_type},
+      {"diagnostics", {{"converged", r.converged}, {"cycles", r.cycles}, {"cycle_type", r.cycle_type}, {"attempts", r.attempts},
                        {"work_units", r.work_units},
                        {"seconds", r.seconds}, {"nodes", r.X.size()},
                        {"scaling", p.hertzian_scaling() ? "hertzian" : "rigid_isoviscous"},

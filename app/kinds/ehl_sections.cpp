@@ -37,6 +37,8 @@ ehl::EhlOptions read_ehl_grid(model::ObjectReader& root, ehl::EhlOptions default
     throw InputError("grid.x_in, grid.x_out: give both or neither");
   if (auto cycle = g.optional_string("cycle", {"V", "W"}))
     o.cycle = *cycle == "V" ? ehl::CycleType::V : ehl::CycleType::W;
+  if (auto relaxation = g.optional_string("relaxation", {"line", "point"}))
+    o.relaxation = *relaxation == "line" ? ehl::Relaxation::line : ehl::Relaxation::point;
   o.max_cycles = g.optional_integer("max_cycles", 1, 100000).value_or(o.max_cycles);
   o.tolerance = g.optional_number("tolerance", {0.0, 1.0, true, true}).value_or(o.tolerance);
   g.finish();
