@@ -237,6 +237,7 @@ TEST(Cli, EhlLineBadInput) {
        "grid.nodes = 1000: use (n0 − 1)·2^k + 1 nodes"},
       {R"({"kind": "ehl_line", "moes": {"M": 20, "L": 10}, "grid": {"nodes": 641, "levels": 5}})",
        "grid.nodes: give either nodes or levels with coarsest_nodes, not both"},
+      {R"({"kind": "ehl_line", "moes": {"M": 20, "L": 10}, "grid": {"relaxation": "newton"}})", "grid.relaxation"},
       {R"({"kind": "ehl_line", "contact": {"reduced_radius_m": 0.01, "load_per_length_N_per_m": 1e5,
           "surface_speeds_m_per_s": [1, 1], "reduced_modulus_Pa": 2.2e11},
           "lubricant": {"viscosity_Pa_s": 6e-5, "pressure_viscosity_1_per_GPa": 20}})",
