@@ -40,6 +40,9 @@ std::vector<EhlOptions> LineContactSolver::fallback_schemes(const EhlOptions& op
   EhlOptions next = options;
   next.omega_jacobi = 0.5 * options.omega_jacobi;
   schemes.push_back(next);
+  EhlOptions wider_jacobi = options;
+  wider_jacobi.xi_threshold = 100.0 * options.xi_threshold;
+  schemes.push_back(wider_jacobi);
   if (options.relaxation == Relaxation::line) {
     next.relaxation = Relaxation::point;
     schemes.push_back(next);
@@ -52,12 +55,14 @@ std::vector<EhlOptions> LineContactSolver::fallback_schemes(const EhlOptions& op
 }
 
 std::string LineContactSolver::describe(const EhlOptions& o) {
-  return fmt::format("{}, {}, ω_GS {}, ω_J {}", o.cycle == CycleType::W ? 'W' : 'V',
-                     o.relaxation == Relaxation::line ? "line" : "point", o.omega_gauss_seidel, o.omega_jacobi);
+  return fmt::format("{}, {}, ω_GS {}, ω_J {}, ξ {}", o.cycle == CycleType::W ? 'W' : 'V',
+                     o.relaxation == Relaxation::line ? "line" : "point", o.omega_gauss_seidel, o.omega_jacobi,
+                     o.xi_threshold);
 }
 
 // Where line W-cycles converge they need ~10–20 cycles; near the limits of the (M, L) map a
-// scheme can diverge where a more cautious one converges (M = 1000, L = 0 needs ω_J = 0.1).
+// scheme can diverge where a more cautious one converges (M = 1000, L = 0 needs ω_J = 0.1;
+// M = 10, L = 0 on 10241 nodes needs ξ = 100).
 // A failed solve is therefore repeated from scratch with the next fallback, and the result
 // says which scheme counted and after how many attempts.
 EhlResult LineContactSolver::try_solve() const {

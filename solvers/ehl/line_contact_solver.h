@@ -64,8 +64,8 @@ struct EhlResult {
   double friction_coefficient = 0.0;
   // Diagnostics.
   bool converged = false;
-  /// The scheme that converged (or the last one tried): "W, line", and after a failure
-  /// the fallback with the attempts before it, e.g. "W, point, ω_J 0.1 (attempt 3)".
+  /// The scheme that converged (or the last one tried), e.g. "W, line, ω_GS 0.3, ω_J 0.2,
+  /// ξ 1", with "(attempt k)" when earlier schemes failed.
   std::string cycle_type;
   int attempts = 1;                        ///< solves tried, the fallbacks included
   int cycles = 0;
@@ -93,8 +93,10 @@ class LineContactSolver {
   /// that a caller can write the diagnostics before it reports the failure.
   [[nodiscard]] EhlResult try_solve() const;
 
-  /// The schemes tried in turn: the given options; the Jacobi under-relaxation halved; point
-  /// relaxation with it; the same with V-cycles. Each is a complete solve from scratch.
+  /// The schemes tried in turn: the given options; the Jacobi under-relaxation halved; the
+  /// Gauss–Seidel split ξ raised 100× (fine grids at L = 0, where ε/h² ≥ 1 reaches into the
+  /// contact); point relaxation with ω_J halved; the same with V-cycles. Each is a complete
+  /// solve from scratch; all solve the same discrete equations.
   [[nodiscard]] static std::vector<EhlOptions> fallback_schemes(const EhlOptions& options);
   [[nodiscard]] static std::string describe(const EhlOptions& options);
 

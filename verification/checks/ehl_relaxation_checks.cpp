@@ -139,6 +139,24 @@ const RegisterCheck rigid_corner(CheckSpec{
                         {{"scheme", r.cycle_type}, {"attempts", r.attempts}, {"cycles", r.cycles}}};
     }});
 
+const RegisterCheck wider_jacobi_fallback(CheckSpec{
+    .id = "ehl.relaxation.fallback_M5_L7_5_fine", .section = section, .solver = solver,
+    .reference = "Moes film formula (film at dp/dx = 0)",
+    .quantity = "H at M = 5, L = 7.5 on 2561 nodes through the fallback schemes", .unit = "-",
+    .tolerance = {0, 0.1},
+    .justification = "a fine-grid point where both line schemes with ξ = 1 diverge and the "
+                     "ξ = 100 scheme converges; it must land within Moes' fit plus the "
+                     "first-order error, as the other Moes points",
+    .tier = Tier::fast, .run = [](const CheckContext&) {
+      const LineContactProblem p(LineContactData::from_moes(5.0, 7.5));
+      EhlOptions o;
+      o.levels = 7;
+      const auto r = LineContactSolver(p, o).try_solve();
+      if (!r.converged) return CheckValue{0.0, reference::moes_H(5.0, 7.5), {{"converged", false}}};
+      return CheckValue{moes_film(5.0, 7.5, r), reference::moes_H(5.0, 7.5),
+                        {{"scheme", r.cycle_type}, {"attempts", r.attempts}, {"cycles", r.cycles}}};
+    }});
+
 const RegisterCheck convergence_map(CheckSpec{
     .id = "ehl.relaxation.map_L_le_15", .section = section, .solver = solver,
     .reference = "issue 3: converge from M = 1 to 1000",
