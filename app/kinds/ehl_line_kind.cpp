@@ -1,7 +1,6 @@
 // Case kind "ehl_line": steady isothermal line-contact EHL by FAS multigrid, from
 // dimensional contact data or from Moes' (M, L).
 #include <cmath>
-#include <fmt/format.h>
 
 #include "ehl/line_contact_solver.h"
 #include "ehl_sections.h"
@@ -88,11 +87,7 @@ json run_ehl_line(const json& case_json) {
   if (moes) out["notes"] = json::array({"Moes input: Barus viscosity and an incompressible lubricant "
                                         "(M and L fix neither p0 for Roelands nor the pressure level)"});
   if (!r.converged)
-    throw ConvergenceError(fmt::format("EHL multigrid did not converge in {} cycles (residual {:.3e}, "
-                                       "force balance {:.3e}, tolerance {:.1e})", r.cycles,
-                                       r.residual_history.empty() ? 0.0 : r.residual_history.back(),
-                                       r.force_history.empty() ? 0.0 : r.force_history.back(), options.tolerance),
-                           out.dump(2));
+    throw ConvergenceError(r.failure_message(options.tolerance), out.dump(2));
   return out;
 }
 

@@ -82,14 +82,16 @@ EhlResult LineContactSolver::try_solve() const {
   return r;
 }
 
+std::string EhlResult::failure_message(double tolerance) const {
+  return fmt::format("EHL multigrid did not converge in {} cycles (residual {:.3e}, force balance {:.3e}, "
+                     "tolerance {:.1e}) with any of {} schemes (last: {})",
+                     cycles, residual_history.empty() ? 0.0 : residual_history.back(),
+                     force_history.empty() ? 0.0 : force_history.back(), tolerance, attempts, cycle_type);
+}
+
 EhlResult LineContactSolver::solve() const {
   auto r = try_solve();
-  if (!r.converged)
-    throw ConvergenceError(fmt::format(
-        "EHL multigrid did not converge in {} cycles (residual {:.3e}, force balance {:.3e}, "
-        "tolerance {:.1e}); {}",
-        r.cycles, r.residual_history.empty() ? 0.0 : r.residual_history.back(),
-        r.force_history.empty() ? 0.0 : r.force_history.back(), options_.tolerance, r.summary()));
+  if (!r.converged) throw ConvergenceError(r.failure_message(options_.tolerance) + "; " + r.summary());
   return r;
 }
 

@@ -80,6 +80,9 @@ struct EhlResult {
   double coarse_h_min = 0.0, coarse_p_max = 0.0;  ///< on the next-coarser grid [m], [Pa]
 
   [[nodiscard]] std::string summary() const;
+  /// "EHL multigrid did not converge in N cycles (residual, force balance, tolerance) with
+  /// any of k schemes (last: …)": the one error message of a failed steady solve.
+  [[nodiscard]] std::string failure_message(double tolerance) const;
 };
 
 class LineContactSolver {
