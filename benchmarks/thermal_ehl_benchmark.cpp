@@ -42,7 +42,7 @@ void BM_TehlPoint_baseline(benchmark::State& state) {
   const ehl::LineContactProblem problem(contact.isothermal_data());
   ehl::EhlResult r;
   for (auto _ : state) {
-    r = ehl::LineContactSolver(problem, ehl::EhlOptions{}).solve();
+    r = ehl::LineContactSolver(problem, ehl::ThermalEhlOptions{}.grid).solve();
     benchmark::DoNotOptimize(r.h_min);
   }
   state.counters["work_units"] = r.work_units;
@@ -71,7 +71,7 @@ void BM_TehlPath_baseline(benchmark::State& state) {
   for (auto _ : state)
     for (const auto& d : contacts) {
       const ehl::LineContactProblem problem(d);
-      benchmark::DoNotOptimize(ehl::LineContactSolver(problem, ehl::EhlOptions{}).solve().h_min);
+      benchmark::DoNotOptimize(ehl::LineContactSolver(problem, ehl::ThermalEhlOptions{}.grid).solve().h_min);
     }
   state.counters["points"] = 7;
 }

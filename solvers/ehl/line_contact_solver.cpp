@@ -25,6 +25,14 @@ void EhlOptions::validate() const {
     throw InputError(fmt::format("grid.x_in = {}, grid.x_out = {}: need x_in < 0 < x_out", x_in, x_out));
 }
 
+EhlOptions EhlOptions::point_relaxation() {
+  EhlOptions o;
+  o.relaxation = Relaxation::point;
+  o.omega_jacobi = 0.1;
+  o.xi_threshold = 0.3;
+  return o;
+}
+
 std::string EhlResult::summary() const {
   return fmt::format("{} cycles, {:.1f} work units, {:.3f} s; h_min {:.4e} m, h_c {:.4e} m, p_max {:.4e} Pa",
                      cycles, work_units, seconds, h_min, h_central, p_max);

@@ -48,6 +48,9 @@ struct EhlOptions {
   bool direct_deformation = false; ///< the O(n²) sum instead of the FFT (the benchmarks' baseline)
 
   void validate() const;          ///< InputError naming the key
+  /// Point relaxation as it was before line relaxation (ξ 0.3, ω 0.3/0.1): about half the
+  /// cost per sweep of a line sweep (no banded LU), for callers whose contacts it converges.
+  [[nodiscard]] static EhlOptions point_relaxation();
 };
 
 struct EhlResult {

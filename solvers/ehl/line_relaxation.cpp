@@ -1,5 +1,6 @@
 #include "line_relaxation.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -12,6 +13,7 @@ LineRelaxation::LineRelaxation(std::size_t nodes, int band)
   const std::size_t b = static_cast<std::size_t>(q_) + 1;  // half-band of J·D
   band_matrix_ = gsl_matrix_alloc(m, 3 * b + 1);  // GSL band LU storage: N × (2·lb + ub + 1)
   x_ = gsl_vector_alloc(m);
+  jacobian_.assign(n_ * static_cast<std::size_t>(2 * q_ + 1), 0.0);
   pivots_ = gsl_vector_uint_alloc(m);
 }
 
@@ -21,21 +23,32 @@ LineRelaxation::~LineRelaxation() {
   gsl_matrix_free(band_matrix_);
 }
 
-double LineRelaxation::jacobian(const ReynoldsCoefficients& c, long i, long j) const {
-  const long last = static_cast<long>(n_) - 1;
-  if (j <= 0 || j >= last || std::labs(i - j) > q_) return 0.0;
-  const auto K = [&](long k) { return c.deformation.kernel(static_cast<std::size_t>(std::labs(k))); };
-  // Wedge and squeeze: −υ(ρ̄_i δH_i − ρ̄_{i−1} δH_{i−1})/h − ρ̄_i δH_i/ΔT with δH_k = −(D/π)K δP.
-  double value = c.speed * c.film_factor * (c.rho[i] * K(i - j) - c.rho[i - 1] * K(i - 1 - j)) / c.h;
-  if (c.time_step > 0.0) value += c.film_factor * c.rho[i] * K(i - j) / c.time_step;
-  // Poiseuille: (ε_{i−½}(P_{i−1} − P_i) + ε_{i+½}(P_{i+1} − P_i))/h², faces by the mean.
+void LineRelaxation::assemble_jacobian(const ReynoldsCoefficients& c) {
+  const long n = static_cast<long>(n_);
+  const long width = 2 * q_ + 1;
+  std::fill(jacobian_.begin(), jacobian_.end(), 0.0);
   const double h2 = c.h * c.h;
-  const double em = 0.5 * (c.eps[i - 1] + c.eps[i]);
-  const double ep = 0.5 * (c.eps[i] + c.eps[i + 1]);
-  if (j == i) value -= (em + ep) / h2;
-  if (j == i - 1) value += em / h2;
-  if (j == i + 1) value += ep / h2;
-  return value;
+  for (long i = 1; i + 1 < n; ++i) {
+    const double em = 0.5 * (c.eps[i - 1] + c.eps[i]);
+    const double ep = 0.5 * (c.eps[i] + c.eps[i + 1]);
+    for (long j = std::max(1L, i - q_); j <= std::min(n - 2, i + q_); ++j) {
+      // Wedge and squeeze: −υ(ρ̄_i δH_i − ρ̄_{i−1} δH_{i−1})/h − ρ̄_i δH_i/ΔT, δH_k = −(D/π)K δP.
+      const double K_i = c.deformation.kernel(static_cast<std::size_t>(std::labs(i - j)));
+      const double K_im1 = c.deformation.kernel(static_cast<std::size_t>(std::labs(i - 1 - j)));
+      double value = c.speed * c.film_factor * (c.rho[i] * K_i - c.rho[i - 1] * K_im1) / c.h;
+      if (c.time_step > 0.0) value += c.film_factor * c.rho[i] * K_i / c.time_step;
+      // Poiseuille: (ε_{i−½}(P_{i−1} − P_i) + ε_{i+½}(P_{i+1} − P_i))/h², faces by the mean.
+      if (j == i) value -= (em + ep) / h2;
+      if (j == i - 1) value += em / h2;
+      if (j == i + 1) value += ep / h2;
+      jacobian_[static_cast<std::size_t>(i * width + (j - i + q_))] = value;
+    }
+  }
+}
+
+double LineRelaxation::jacobian(long i, long j) const {
+  if (std::labs(i - j) > q_) return 0.0;
+  return jacobian_[static_cast<std::size_t>(i * (2 * q_ + 1) + (j - i + q_))];
 }
 
 std::vector<double> LineRelaxation::change(const ReynoldsCoefficients& c, const std::vector<double>& P,
@@ -44,10 +57,11 @@ std::vector<double> LineRelaxation::change(const ReynoldsCoefficients& c, const 
                                            double omega_jacobi) {
   const long m = static_cast<long>(n_) - 2;
   const long b = q_ + 1;
+  assemble_jacobian(c);
   // Column j of J·D: J's column j, less a quarter of its neighbours' where j is distributive.
   const auto column_entry = [&](long i, long j) {
-    const double direct = jacobian(c, i, j);
-    return jacobi[j] ? direct - 0.25 * (jacobian(c, i, j - 1) + jacobian(c, i, j + 1)) : direct;
+    const double direct = jacobian(i, j);
+    return jacobi[j] ? direct - 0.25 * (jacobian(i, j - 1) + jacobian(i, j + 1)) : direct;
   };
   // A cavitated node stays at zero when its own change would make it negative.
   std::vector<char> held(n_, 0);

@@ -49,14 +49,17 @@ class LineRelaxation {
                                            double omega_jacobi);
 
  private:
-  /// ∂L_i/∂P_j in the band |i − j| ≤ q (interior j only), zero outside it.
-  [[nodiscard]] double jacobian(const ReynoldsCoefficients& c, long i, long j) const;
+  /// ∂L_i/∂P_j in the band |i − j| ≤ q (interior i and j), stored row by row.
+  void assemble_jacobian(const ReynoldsCoefficients& c);
+  /// The stored ∂L_i/∂P_j; zero outside the band and for the end nodes.
+  [[nodiscard]] double jacobian(long i, long j) const;
 
   std::size_t n_;
   int q_;
   gsl_matrix* band_matrix_;
   gsl_vector* x_;
   gsl_vector_uint* pivots_;
+  std::vector<double> jacobian_;  ///< n × (2q + 1): row i holds ∂L_i/∂P_{i−q…i+q}
 };
 
 }  // namespace gearbench::ehl
