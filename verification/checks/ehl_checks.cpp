@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "check_registry.h"
+#include "ehl_check_support.h"
 #include "closed_form/ehl_closed_form.h"
 #include "ehl/deformation.h"
 #include "ehl/fas_multigrid.h"
@@ -194,37 +195,7 @@ const RegisterCheck transient_squeeze(CheckSpec{
     }});
 
 // --- Grid convergence -------------------------------------------------------------------------
-
-struct GridSeries {
-  std::vector<double> nodes, H_c, H_min, p_max;
-};
-
-/// M = 10, L = 0 on 257 … 8193 nodes (33 coarsest nodes, 4 … 9 levels).
-GridSeries grid_series() {
-  const auto d = LineContactData::from_moes(10.0, 0.0);
-  const LineContactProblem p(d);
-  const double U_sum = d.viscosity * (d.u1 + d.u2) / (d.reduced_modulus * d.reduced_radius);
-  const double to_moes = 1.0 / (d.reduced_radius * std::sqrt(U_sum));
-  GridSeries g;
-  for (int levels = 4; levels <= 9; ++levels) {
-    EhlOptions o;
-    o.levels = levels;
-    o.coarsest_nodes = 33;
-    const auto r = LineContactSolver(p, o).solve();
-    g.nodes.push_back(static_cast<double>(r.X.size()));
-    g.H_c.push_back(r.h_central * to_moes);
-    g.H_min.push_back(r.h_min * to_moes);
-    g.p_max.push_back(r.p_max / p.hertz_pressure());
-  }
-  return g;
-}
-
-double observed_order(const std::vector<double>& v) {
-  const std::size_t n = v.size();
-  return std::log2((v[n - 3] - v[n - 2]) / (v[n - 2] - v[n - 1]));
-}
-
-double richardson(const std::vector<double>& v) { return 2.0 * v.back() - v[v.size() - 2]; }
+// M = 10, L = 0 on 257 … 8193 nodes (33 coarsest nodes, 4 … 9 levels).
 
 const RegisterCheck grid_convergence(CheckSpec{
     .id = "ehl.grid_convergence.order", .section = section, .solver = solver,
@@ -234,7 +205,7 @@ const RegisterCheck grid_convergence(CheckSpec{
     .justification = "first-order scheme in its asymptotic range: the order of the last three "
                      "grids must be 1 within the drift seen between successive triples",
     .tier = Tier::fast, .run = [](const CheckContext&) {
-      const auto g = grid_series();
+      const auto g = grid_series(10.0, 0.0, 33);
       return CheckValue{observed_order(g.H_c), 1.0,
                         {{"nodes", g.nodes}, {"H_c", g.H_c}, {"H_min", g.H_min}, {"p_max_over_p_h", g.p_max},
                          {"order_H_min", observed_order(g.H_min)}, {"order_p_max", observed_order(g.p_max)},
@@ -283,8 +254,7 @@ const bool moes_checks = [] {
         .tier = Tier::fast, .run = [pt](const CheckContext&) {
           const auto d = LineContactData::from_moes(pt.M, pt.L);
           const auto r = solve_moes(pt.M, pt.L);
-          const double U_sum = d.viscosity * (d.u1 + d.u2) / (d.reduced_modulus * d.reduced_radius);
-          return CheckValue{r.h_dpdx0 / d.reduced_radius / std::sqrt(U_sum), reference::moes_H(pt.M, pt.L),
+          return CheckValue{r.h_dpdx0 * moes_units(d), reference::moes_H(pt.M, pt.L),
                             {{"cycles", r.cycles}, {"work_units", r.work_units}}};
         }});
   return true;
@@ -293,7 +263,7 @@ const bool moes_checks = [] {
 // --- Where the solver converges today -----------------------------------------------------
 
 void add_convergence_table(reports::Report& report) {
-  const auto g = grid_series();
+  const auto g = grid_series(10.0, 0.0, 33);
   std::string rows;
   for (std::size_t i = 0; i < g.nodes.size(); ++i)
     rows += fmt::format("| {} | {:.6f} | {:.6f} | {:.6f} |\n", g.nodes[i], g.H_c[i], g.H_min[i], g.p_max[i]);
@@ -338,8 +308,7 @@ const RegisterSection ehl_section(SectionSpec{
             o.levels = 5;
             o.max_cycles = 60;
             const auto r = LineContactSolver(p, o).try_solve();
-            const double U_sum = d.viscosity * (d.u1 + d.u2) / (d.reduced_modulus * d.reduced_radius);
-            const double H = r.h_dpdx0 / d.reduced_radius / std::sqrt(U_sum);
+            const double H = r.h_dpdx0 * moes_units(d);
             const std::string attempt = r.attempts > 1 ? fmt::format(" (attempt {})", r.attempts) : "";
             rows += r.converged ? fmt::format(" {} cycles{}, H {:.3f} (Moes {:.3f}) |", r.cycles, attempt, H,
                                               reference::moes_H(M, L))
@@ -364,4 +333,22 @@ const RegisterSection ehl_section(SectionSpec{
     }});
 
 }  // namespace
+
+GridSeries grid_series(double M, double L, int coarsest_nodes) {
+  const auto d = LineContactData::from_moes(M, L);
+  const LineContactProblem p(d);
+  GridSeries g;
+  for (int levels = 4; levels <= 9; ++levels) {
+    EhlOptions o;
+    o.levels = levels;
+    o.coarsest_nodes = coarsest_nodes;
+    const auto r = LineContactSolver(p, o).solve();
+    g.nodes.push_back(static_cast<double>(r.X.size()));
+    g.H_c.push_back(r.h_central * moes_units(d));
+    g.H_min.push_back(r.h_min * moes_units(d));
+    g.p_max.push_back(r.p_max / p.hertz_pressure());
+  }
+  return g;
+}
+
 }  // namespace gearbench::verification
