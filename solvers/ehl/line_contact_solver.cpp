@@ -51,6 +51,12 @@ std::vector<EhlOptions> LineContactSolver::fallback_schemes(const EhlOptions& op
   EhlOptions wider_jacobi = options;
   wider_jacobi.xi_threshold = 100.0 * options.xi_threshold;
   schemes.push_back(wider_jacobi);
+  if (options.levels > 2) {
+    EhlOptions finer_coarsest = wider_jacobi;
+    finer_coarsest.levels = options.levels - 1;
+    finer_coarsest.coarsest_nodes = 2 * options.coarsest_nodes - 1;
+    schemes.push_back(finer_coarsest);
+  }
   if (options.relaxation == Relaxation::line) {
     next.relaxation = Relaxation::point;
     schemes.push_back(next);
@@ -63,22 +69,38 @@ std::vector<EhlOptions> LineContactSolver::fallback_schemes(const EhlOptions& op
 }
 
 std::string LineContactSolver::describe(const EhlOptions& o) {
-  return fmt::format("{}, {}, ω_GS {}, ω_J {}, ξ {}", o.cycle == CycleType::W ? 'W' : 'V',
+  return fmt::format("{}, {}, ω_GS {}, ω_J {}, ξ {}, coarsest grid {} nodes", o.cycle == CycleType::W ? 'W' : 'V',
                      o.relaxation == Relaxation::line ? "line" : "point", o.omega_gauss_seidel, o.omega_jacobi,
-                     o.xi_threshold);
+                     o.xi_threshold, o.coarsest_nodes);
 }
 
 // Where line W-cycles converge they need ~10–20 cycles; near the limits of the (M, L) map a
 // scheme can diverge where a more cautious one converges (M = 1000, L = 0 needs ω_J = 0.1;
-// M = 10, L = 0 on 10241 nodes needs ξ = 100).
+// M = 10, L = 0 on 10241 nodes needs ξ = 100; M = 5, L = 20 needs the 81-node coarsest
+// grid; M = 2, L = 20 and 22.5 need the continuation in α).
 // A failed solve is therefore repeated from scratch with the next fallback, and the result
 // says which scheme counted and after how many attempts.
 EhlResult LineContactSolver::try_solve() const {
+  EhlResult r = solve_with_fallbacks(problem_);
+  if (r.converged || !(problem_.data().pressure_viscosity > 0.0)) return r;
+  EhlResult c = solve_by_continuation();
+  c.attempts += r.attempts;
+  c.work_units += r.work_units;
+  c.seconds += r.seconds;
+  if (c.converged) return c;
+  r.attempts = c.attempts;
+  r.work_units = c.work_units;
+  r.seconds = c.seconds;
+  r.cycle_type += "; then " + c.cycle_type;
+  return r;
+}
+
+EhlResult LineContactSolver::solve_with_fallbacks(const LineContactProblem& problem) const {
   EhlResult r;
   double work = 0.0, seconds = 0.0;
   const auto schemes = fallback_schemes(options_);
   for (std::size_t k = 0; k < schemes.size(); ++k) {
-    r = FasMultigrid(problem_, schemes[k], ContactState{}).solve();
+    r = FasMultigrid(problem, schemes[k], ContactState{}).solve();
     work += r.work_units;
     seconds += r.seconds;
     r.attempts = static_cast<int>(k + 1);
@@ -88,6 +110,53 @@ EhlResult LineContactSolver::try_solve() const {
   r.work_units = work;
   r.seconds = seconds;
   return r;
+}
+
+// Continuation in the pressure–viscosity coefficient (α, and Roelands' z with it, which is
+// proportional to α): the contact is solved at α/2, then α is raised in steps, each started
+// from the last converged solution on the same grid (the domain and the scaling do not
+// depend on α). A step that fails is halved and retried; one that converges lets the next
+// grow by half. The final solve is the given problem's, to the same tolerance.
+EhlResult LineContactSolver::solve_by_continuation() const {
+  constexpr double first_fraction = 0.5, first_step = 0.125, smallest_step = 1.0 / 128.0;
+  const auto scaled = [this](double fraction) {
+    LineContactData d = problem_.data();
+    d.pressure_viscosity *= fraction;
+    d.roelands_z *= fraction;
+    return d;
+  };
+  const LineContactProblem start(scaled(first_fraction));
+  EhlResult last = solve_with_fallbacks(start);
+  double reached = first_fraction, step = first_step, work = last.work_units, seconds = last.seconds;
+  int solves = 1;
+  while (last.converged && reached < 1.0 && step >= smallest_step) {
+    const double next = std::min(1.0, reached + step);
+    const LineContactProblem problem(scaled(next));
+    EhlResult r = FasMultigrid(problem, options_, ContactState{})
+                      .solve(WarmStart{last.P, last.H0, 0.0});
+    ++solves;
+    work += r.work_units;
+    seconds += r.seconds;
+    if (r.converged) {
+      last = std::move(r);
+      reached = next;
+      step *= 1.5;
+    } else {
+      step *= 0.5;
+    }
+  }
+  if (!last.converged) reached = 0.0;
+  last.converged = last.converged && reached == 1.0;
+  last.attempts = 1;
+  last.work_units = work;
+  last.seconds = seconds;
+  last.cycle_type = describe(options_) +
+                    (last.converged ? fmt::format(", continuation in α from {}·α in {} solves", first_fraction, solves)
+                     : reached == 0.0
+                         ? fmt::format(", continuation in α: the start at {}·α did not converge", first_fraction)
+                         : fmt::format(", continuation in α from {}·α stalled at {:.3g}·α after {} solves",
+                                       first_fraction, reached, solves));
+  return last;
 }
 
 std::string EhlResult::failure_message(double tolerance) const {

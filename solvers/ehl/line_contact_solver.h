@@ -101,12 +101,21 @@ class LineContactSolver {
 
   /// The schemes tried in turn: the given options; the Jacobi under-relaxation halved; the
   /// Gauss–Seidel split ξ raised 100× (fine grids at L = 0, where ε/h² ≥ 1 reaches into the
-  /// contact); point relaxation with ω_J halved; the same with V-cycles. Each is a complete
-  /// solve from scratch; all solve the same discrete equations.
+  /// contact); the same on one level fewer, from a coarsest grid of twice the nodes (the
+  /// coarsest grid then holds the pressure spike at high L); point relaxation with ω_J
+  /// halved; the same with V-cycles. Each is a complete solve from scratch; all solve the
+  /// same discrete equations on the same finest grid. When all fail, try_solve() continues
+  /// in α (solve_by_continuation).
   [[nodiscard]] static std::vector<EhlOptions> fallback_schemes(const EhlOptions& options);
   [[nodiscard]] static std::string describe(const EhlOptions& options);
 
  private:
+  /// The schemes of fallback_schemes() in turn on `problem`, each from scratch.
+  [[nodiscard]] EhlResult solve_with_fallbacks(const LineContactProblem& problem) const;
+  /// The contact solved at α/2, then with α raised step by step to its value, each step
+  /// warm-started from the last: the last resort of try_solve() for piezoviscous contacts.
+  [[nodiscard]] EhlResult solve_by_continuation() const;
+
   const LineContactProblem& problem_;
   EhlOptions options_;
 };

@@ -22,6 +22,19 @@ struct GridSeries {
 /// (a solve that does not converge throws, failing the check).
 GridSeries grid_series(double M, double L, int coarsest_nodes);
 
+/// One point of the (M, L) convergence map: 641 nodes, the default solver with its fallbacks.
+struct MapPoint {
+  double M = 0.0, L = 0.0;
+  bool in_range = false;  ///< false: ᾱ = α·p_h > 40 with Barus, refused by the input validation
+  bool converged = false;
+  int attempts = 0, cycles = 0;
+  double H = 0.0;         ///< film at dp/dx = 0, Moes units
+};
+
+/// M ∈ {1, 2, 5, 10, 20, 50, 100, 300, 1000} × L ∈ {0, 5, 10, 15, 20, 22.5, 25}, solved once
+/// per process (the report's map and the check that holds it share the solves).
+const std::vector<MapPoint>& moes_map();
+
 /// log2 of the ratio of the last two changes of a series on grids halving h.
 inline double observed_order(const std::vector<double>& v) {
   const std::size_t n = v.size();
