@@ -97,6 +97,7 @@ int bench_command(const BenchRequest& request) {
   if (const auto t = commit_time_utc(build::git_sha()); !t.empty()) record["gearbench"]["code"]["commit_time_utc"] = t;
   record["gearbench"]["repetitions"] = request.repetitions;
   record["ratios"] = reports::side_by_side_ratios(record["benchmarks"]);
+  record["scaling"] = reports::scaling_exponents(record["benchmarks"]);
   const auto name = reports::report_folder_name();
   const auto target = free_path(request.out_dir, request.record ? name : "bench_" + name);
   {
@@ -107,6 +108,8 @@ int bench_command(const BenchRequest& request) {
   }
   for (const auto& [run, r] : record["ratios"].items())
     std::cerr << fmt::format("{}: {:.3g} x baseline\n", run, r["ratio"].get<double>());
+  for (const auto& [family, s] : record["scaling"].items())
+    std::cerr << fmt::format("{}: time ∝ nodes^{:.3g}\n", family, s["exponent"].get<double>());
   std::cout << target.string() << "\n";
   return exit_ok;
 }

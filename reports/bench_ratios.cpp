@@ -1,5 +1,9 @@
 #include "bench_ratios.h"
 
+#include <gsl/gsl_fit.h>
+
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -41,6 +45,28 @@ nlohmann::json side_by_side_ratios(const nlohmann::json& benchmarks) {
     }
   }
   return ratios;
+}
+
+nlohmann::json scaling_exponents(const nlohmann::json& benchmarks) {
+  std::map<std::string, std::map<double, std::vector<double>>> samples;  // family -> nodes -> times
+  for (const auto& b : benchmarks)
+    if (b.value("run_type", "iteration") == "iteration" && b.contains("nodes") && b["nodes"].is_number() &&
+        b["nodes"].get<double>() > 0.0)
+      samples[family(b["run_name"].get<std::string>())][b["nodes"].get<double>()].push_back(real_seconds(b));
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [fam, by_nodes] : samples) {
+    if (by_nodes.size() < 3) continue;
+    std::vector<double> x, y;
+    for (const auto& [nodes, times] : by_nodes) {
+      x.push_back(std::log(nodes));
+      y.push_back(std::log(reports::median(times)));
+    }
+    double intercept = 0.0, slope = 0.0, cov00 = 0.0, cov01 = 0.0, cov11 = 0.0, sumsq = 0.0;
+    gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &intercept, &slope, &cov00, &cov01, &cov11, &sumsq);
+    out[fam] = {{"exponent", slope}, {"points", x.size()}, {"nodes_min", by_nodes.begin()->first},
+                {"nodes_max", by_nodes.rbegin()->first}};
+  }
+  return out;
 }
 
 }  // namespace gearbench::reports

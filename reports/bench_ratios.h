@@ -1,6 +1,6 @@
 #pragma once
 // Side-by-side ratios of a Google Benchmark run: each benchmark X[/args] over X_baseline
-// measured in the same run.
+// measured in the same run; and the scaling exponent of a family measured over sizes.
 #include <nlohmann/json.hpp>
 
 namespace gearbench::reports {
@@ -12,5 +12,10 @@ double real_seconds(const nlohmann::json& run);
 /// arguments, or a baseline without arguments for its whole family; medians over
 /// repetitions, times in seconds: {name: {baseline, solver_time, baseline_time, ratio}}.
 nlohmann::json side_by_side_ratios(const nlohmann::json& benchmarks);
+
+/// The fitted exponent p of time ∝ nodes^p for every benchmark family whose runs carry a
+/// `nodes` counter at three or more sizes (least squares on the logarithms of the median
+/// times): {family: {exponent, points, nodes_min, nodes_max}}.
+nlohmann::json scaling_exponents(const nlohmann::json& benchmarks);
 
 }  // namespace gearbench::reports

@@ -33,6 +33,13 @@ Note benchmark_note(const nlohmann::json& record) {
   text += "\n| solver | baseline | ratio |\n|---|---|---|\n";
   for (const auto& [name, r] : record["ratios"].items())
     text += fmt::format("| `{}` | `{}` | {:.3g} |\n", name, r["baseline"].get<std::string>(), r["ratio"].get<double>());
+  // Records from before the scaling fit have no "scaling" key.
+  if (record.contains("scaling") && !record["scaling"].empty()) {
+    text += "\n| family | time ∝ nodes^p, fitted p | sizes | nodes |\n|---|---|---|---|\n";
+    for (const auto& [family, s] : record["scaling"].items())
+      text += fmt::format("| `{}` | {:.3g} | {} | {:.0f} … {:.0f} |\n", family, s["exponent"].get<double>(),
+                          s["points"].get<int>(), s["nodes_min"].get<double>(), s["nodes_max"].get<double>());
+  }
   return {"Benchmarks", text};
 }
 

@@ -290,3 +290,20 @@ TEST(BenchRatios, UseSecondsAcrossTimeUnits) {
   EXPECT_DOUBLE_EQ(r["BM_Y/8"]["ratio"].get<double>(), 0.5);
   EXPECT_FALSE(r.contains("BM_X_baseline"));
 }
+
+// The scaling fit recovers the exponent of time ∝ nodes^p across time units, ignores
+// families without a nodes counter or with fewer than three sizes.
+TEST(BenchScaling, FitsTheExponentOfTimeAgainstNodes) {
+  auto runs = nlohmann::json::array();
+  for (double n : {257.0, 1025.0, 4097.0})
+    runs.push_back({{"run_name", "BM_S/" + std::to_string(static_cast<int>(n))}, {"run_type", "iteration"},
+                    {"real_time", 3.0 * std::pow(n, 1.2) * (n > 1000 ? 1e-3 : 1.0)},
+                    {"time_unit", n > 1000 ? "ms" : "us"}, {"nodes", n}});
+  runs.push_back({{"run_name", "BM_T/1"}, {"run_type", "iteration"}, {"real_time", 1.0}, {"time_unit", "ms"}, {"nodes", 9.0}});
+  runs.push_back({{"run_name", "BM_T/2"}, {"run_type", "iteration"}, {"real_time", 2.0}, {"time_unit", "ms"}, {"nodes", 17.0}});
+  const auto s = gearbench::reports::scaling_exponents(runs);
+  ASSERT_TRUE(s.contains("BM_S"));
+  EXPECT_NEAR(s["BM_S"]["exponent"].get<double>(), 1.2, 1e-12);
+  EXPECT_EQ(s["BM_S"]["points"].get<int>(), 3);
+  EXPECT_FALSE(s.contains("BM_T"));
+}

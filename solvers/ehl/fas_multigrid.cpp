@@ -38,6 +38,9 @@ struct Level {
   /// (Venner & Lubrecht 2000, §6.4; without it the coarse film near the pressure spike
   /// differs from the fine one and the coarse problem drives high-L cases to divergence).
   std::vector<double> film_correction;
+  /// Coarse nodes held at the injected fine pressure (options.hold_unresolved): no change,
+  /// so no correction, where this grid cannot represent the fine pressure. Empty: none.
+  std::vector<char> held;
   double g = 0.0;          ///< FAS right-hand side of the force balance
   double seconds = 0.0;
   std::unique_ptr<LineRelaxation> line;  ///< banded workspace (line relaxation only)
@@ -119,6 +122,7 @@ class FasMultigrid::Impl {
       interpolate_solution(*levels_[k - 1], *levels_[k]);
       levels_[k]->g = state_.load;
       levels_[k]->film_correction.clear();
+      levels_[k]->held.clear();
       std::fill(levels_[k]->f.begin(), levels_[k]->f.end(), 0.0);
       finest_ = k;
       for (int c = 0; c < 2; ++c) cycle(k);
@@ -267,7 +271,7 @@ class FasMultigrid::Impl {
     }
     const ReynoldsCoefficients c{l.eps, l.rho, l.deformation, l.h, problem_.deformation_factor() / pi,
                                  state_.speed, state_.time_step};
-    const auto dP = l.line->change(c, l.P, residual, jacobi, o_.omega_gauss_seidel, o_.omega_jacobi);
+    const auto dP = l.line->change(c, l.P, residual, jacobi, o_.omega_gauss_seidel, o_.omega_jacobi, l.held);
     for (std::size_t i = 1; i + 1 < l.n; ++i) l.P[i] += dP[i];
   }
 
@@ -278,6 +282,7 @@ class FasMultigrid::Impl {
     const double c = problem_.deformation_factor() / pi;
     std::vector<double> jacobi_change(l.n, 0.0);
     for (std::size_t i = 1; i + 1 < l.n; ++i) {
+      if (!l.held.empty() && l.held[i]) continue;
       const double residual = l.f[i] - operator_at(l, i);
       if (!jacobi_node(l, i)) {
         const double old = l.P[i];
@@ -373,6 +378,24 @@ class FasMultigrid::Impl {
     for (std::size_t I = 1; I + 1 < coarse.n; ++I)
       coarse.f[I] = operator_at(coarse, I) + 0.25 * (r[2 * I - 1] + 2.0 * r[2 * I] + r[2 * I + 1]);
     coarse.g = integral(coarse) + (fine.g - integral(fine));
+    hold_unresolved(coarse);
+  }
+
+  /// With options.hold_unresolved, marks the coarse nodes whose injected pressure has a
+  /// second difference above half its value: the pressure varies there on the scale of this
+  /// grid's mesh (a spike narrower than the mesh, the foot of the outlet), and a coarse
+  /// change would be interpolated into the fine grid as an error. The fine grid's relaxation
+  /// alone converges those nodes. Measured on the 15-case suite (641–5121 nodes, M 1–1000,
+  /// L 0–20) for thresholds 0.2, 0.5, 1, 2, 4: 0.5 converged 14, the others 13.
+  void hold_unresolved(Level& coarse) const {
+    coarse.held.clear();
+    if (!o_.hold_unresolved) return;
+    constexpr double threshold = 0.5;
+    coarse.held.assign(coarse.n, 0);
+    for (std::size_t I = 1; I + 1 < coarse.n; ++I) {
+      const double second_difference = std::abs(coarse.P[I - 1] - 2.0 * coarse.P[I] + coarse.P[I + 1]);
+      coarse.held[I] = coarse.P[I] > 0.0 && second_difference > threshold * coarse.P[I];
+    }
   }
 
   /// FMG interpolation: cubic in the interior (4-point), linear next to the ends.

@@ -45,6 +45,9 @@ LineContactSolver::LineContactSolver(const LineContactProblem& problem, EhlOptio
 
 std::vector<EhlOptions> LineContactSolver::fallback_schemes(const EhlOptions& options) {
   std::vector<EhlOptions> schemes{options};
+  EhlOptions toggled = options;
+  toggled.hold_unresolved = !options.hold_unresolved;
+  schemes.push_back(toggled);
   EhlOptions next = options;
   next.omega_jacobi = 0.5 * options.omega_jacobi;
   schemes.push_back(next);
@@ -69,15 +72,15 @@ std::vector<EhlOptions> LineContactSolver::fallback_schemes(const EhlOptions& op
 }
 
 std::string LineContactSolver::describe(const EhlOptions& o) {
-  return fmt::format("{}, {}, ω_GS {}, ω_J {}, ξ {}, coarsest grid {} nodes", o.cycle == CycleType::W ? 'W' : 'V',
+  return fmt::format("{}, {}, ω_GS {}, ω_J {}, ξ {}, coarsest grid {} nodes{}", o.cycle == CycleType::W ? 'W' : 'V',
                      o.relaxation == Relaxation::line ? "line" : "point", o.omega_gauss_seidel, o.omega_jacobi,
-                     o.xi_threshold, o.coarsest_nodes);
+                     o.xi_threshold, o.coarsest_nodes, o.hold_unresolved ? ", unresolved coarse nodes held" : "");
 }
 
 // Where line W-cycles converge they need ~10–20 cycles; near the limits of the (M, L) map a
-// scheme can diverge where a more cautious one converges (M = 1000, L = 0 needs ω_J = 0.1;
-// M = 10, L = 0 on 10241 nodes needs ξ = 100; M = 5, L = 20 needs the 81-node coarsest
-// grid; M = 2, L = 20 and 22.5 need the continuation in α).
+// scheme can diverge where a more cautious one converges (on 2561 nodes and more, L ≳ 15
+// needs the held coarse nodes; M = 1000, L = 0 needs ω_J = 0.1; M = 2, L = 20 to 25 on 641
+// nodes need the continuation in α).
 // A failed solve is therefore repeated from scratch with the next fallback, and the result
 // says which scheme counted and after how many attempts.
 EhlResult LineContactSolver::try_solve() const {
@@ -127,13 +130,14 @@ EhlResult LineContactSolver::solve_by_continuation() const {
   };
   const LineContactProblem start(scaled(first_fraction));
   EhlResult last = solve_with_fallbacks(start);
+  EhlOptions stepping = options_;
+  stepping.hold_unresolved = true;
   double reached = first_fraction, step = first_step, work = last.work_units, seconds = last.seconds;
   int solves = 1;
   while (last.converged && reached < 1.0 && step >= smallest_step) {
     const double next = std::min(1.0, reached + step);
     const LineContactProblem problem(scaled(next));
-    EhlResult r = FasMultigrid(problem, options_, ContactState{})
-                      .solve(WarmStart{last.P, last.H0, 0.0});
+    EhlResult r = FasMultigrid(problem, stepping, ContactState{}).solve(WarmStart{last.P, last.H0, 0.0});
     ++solves;
     work += r.work_units;
     seconds += r.seconds;
@@ -150,7 +154,7 @@ EhlResult LineContactSolver::solve_by_continuation() const {
   last.attempts = 1;
   last.work_units = work;
   last.seconds = seconds;
-  last.cycle_type = describe(options_) +
+  last.cycle_type = describe(stepping) +
                     (last.converged ? fmt::format(", continuation in α from {}·α in {} solves", first_fraction, solves)
                      : reached == 0.0
                          ? fmt::format(", continuation in α: the start at {}·α did not converge", first_fraction)

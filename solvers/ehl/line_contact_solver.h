@@ -44,6 +44,13 @@ struct EhlOptions {
                                   ///< (S = 1 Hertzian, the film guess in rigid units)
   double xi_threshold = 1.0;      ///< ε/h² splitting Gauss–Seidel from Jacobi (0.3 and 1
                                   ///< converge the same suite cases; 1 in fewer cycles)
+  /// Coarse nodes where the injected pressure varies on the coarse mesh's scale are held
+  /// (fas_multigrid.cpp, hold_unresolved): on fine grids the resolved pressure spike (and at
+  /// L = 0 from 10241 nodes the outlet) otherwise drives the coarse problems to divergence.
+  /// Off by default: on 641 nodes it costs up to twice the cycles at high L (M = 10, L = 15:
+  /// 45 against 22) and fails where the plain scheme converges (M = 1, L = 15); the first
+  /// fallback turns it on.
+  bool hold_unresolved = false;
   double x_in = 0.0, x_out = 0.0; ///< domain; both 0 picks the problem's default
   bool direct_deformation = false; ///< the O(n²) sum instead of the FFT (the benchmarks' baseline)
 
@@ -99,13 +106,14 @@ class LineContactSolver {
   /// that a caller can write the diagnostics before it reports the failure.
   [[nodiscard]] EhlResult try_solve() const;
 
-  /// The schemes tried in turn: the given options; the Jacobi under-relaxation halved; the
-  /// Gauss–Seidel split ξ raised 100× (fine grids at L = 0, where ε/h² ≥ 1 reaches into the
-  /// contact); the same on one level fewer, from a coarsest grid of twice the nodes (the
-  /// coarsest grid then holds the pressure spike at high L); point relaxation with ω_J
-  /// halved; the same with V-cycles. Each is a complete solve from scratch; all solve the
-  /// same discrete equations on the same finest grid. When all fail, try_solve() continues
-  /// in α (solve_by_continuation).
+  /// The schemes tried in turn: the given options; the same with hold_unresolved toggled
+  /// (holding the coarse nodes of a resolved pressure spike: fine grids at high L); the
+  /// Jacobi under-relaxation halved; the Gauss–Seidel split ξ raised 100× (fine grids at
+  /// L = 0, where ε/h² ≥ 1 reaches into the contact); the same on one level fewer, from a
+  /// coarsest grid of twice the nodes; point relaxation with ω_J halved; the same with
+  /// V-cycles. Each is a complete solve from scratch; all solve the same discrete equations
+  /// on the same finest grid. When all fail, try_solve() continues in α
+  /// (solve_by_continuation).
   [[nodiscard]] static std::vector<EhlOptions> fallback_schemes(const EhlOptions& options);
   [[nodiscard]] static std::string describe(const EhlOptions& options);
 

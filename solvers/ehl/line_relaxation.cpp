@@ -54,7 +54,7 @@ double LineRelaxation::jacobian(long i, long j) const {
 std::vector<double> LineRelaxation::change(const ReynoldsCoefficients& c, const std::vector<double>& P,
                                            const std::vector<double>& residual,
                                            const std::vector<char>& jacobi, double omega_gauss_seidel,
-                                           double omega_jacobi) {
+                                           double omega_jacobi, const std::vector<char>& held_nodes) {
   const long m = static_cast<long>(n_) - 2;
   const long b = q_ + 1;
   assemble_jacobian(c);
@@ -66,7 +66,7 @@ std::vector<double> LineRelaxation::change(const ReynoldsCoefficients& c, const 
   // A cavitated node stays at zero when its own change would make it negative.
   std::vector<char> held(n_, 0);
   for (long i = 1; i <= m; ++i)
-    held[i] = P[i] <= 0.0 && residual[i] / column_entry(i, i) <= 0.0;
+    held[i] = (P[i] <= 0.0 && residual[i] / column_entry(i, i) <= 0.0) || (!held_nodes.empty() && held_nodes[i]);
 
   gsl_matrix_set_zero(band_matrix_);
   for (long col = 0; col < m; ++col) {

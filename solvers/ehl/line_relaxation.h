@@ -42,11 +42,12 @@ class LineRelaxation {
 
   /// The pressure change δP of one sweep. `residual` is f − L(P) at the interior nodes,
   /// `jacobi[i]` marks the nodes relaxed by distributed changes, `omega_*` under-relax the
-  /// right-hand side of the two kinds of node. The ends (P = 0) do not change.
+  /// right-hand side of the two kinds of node. The ends (P = 0) do not change, nor do the
+  /// nodes marked in `held` (empty: none), as cavitated nodes do not.
   [[nodiscard]] std::vector<double> change(const ReynoldsCoefficients& c, const std::vector<double>& P,
                                            const std::vector<double>& residual,
                                            const std::vector<char>& jacobi, double omega_gauss_seidel,
-                                           double omega_jacobi);
+                                           double omega_jacobi, const std::vector<char>& held = {});
 
  private:
   /// ∂L_i/∂P_j in the band |i − j| ≤ q (interior i and j), stored row by row.

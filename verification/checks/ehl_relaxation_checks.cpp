@@ -121,13 +121,62 @@ const RegisterCheck wider_jacobi_fallback(CheckSpec{
                         {{"scheme", r.cycle_type}, {"attempts", r.attempts}, {"cycles", r.cycles}}};
     }});
 
+const RegisterCheck held_coarse_nodes(CheckSpec{
+    .id = "ehl.relaxation.hold_unresolved_M10_L17_5_fine", .section = section, .solver = solver,
+    .reference = "Moes film formula (film at dp/dx = 0)",
+    .quantity = "H at M = 10, L = 17.5 on 2561 nodes, unresolved coarse nodes held", .unit = "-",
+    .tolerance = {0, 0.1},
+    .justification = "without the held coarse nodes every scheme diverges here (the coarse "
+                     "problems of the resolved spike; held_unconverged in the diagnostics); "
+                     "with them the solve must converge and land within Moes' fit plus the "
+                     "first-order error, as the other Moes points",
+    .tier = Tier::fast, .run = [](const CheckContext&) {
+      const LineContactProblem p(LineContactData::from_moes(10.0, 17.5));
+      EhlOptions o;
+      o.levels = 7;
+      const auto without = FasMultigrid(p, o, ContactState{}).solve();
+      o.hold_unresolved = true;
+      const auto r = FasMultigrid(p, o, ContactState{}).solve();
+      if (!r.converged) return CheckValue{0.0, reference::moes_H(10.0, 17.5), {{"converged", false}}};
+      return CheckValue{moes_film(10.0, 17.5, r), reference::moes_H(10.0, 17.5),
+                        {{"cycles", r.cycles}, {"work_units", r.work_units},
+                         {"held_unconverged", !without.converged}}};
+    }});
+
+const RegisterCheck finest_grid(CheckSpec{
+    .id = "ehl.grid_convergence.nodes_16385", .section = section, .solver = solver,
+    .reference = "first-order extrapolation from 4097 and 8193 nodes",
+    .quantity = "H_c at M = 10, L = 0 on 16385 nodes (coarsest grid 17 nodes)", .unit = "-",
+    .tolerance = {0, 1e-4},
+    .justification = "a first-order scheme halves its error with h, so H_c(16385) = H_c(8193) − "
+                     "(H_c(4097) − H_c(8193))/2 up to the next order; the three solves stop at "
+                     "a scaled residual of 1e-8, which moves H_c by far less than 1e-4",
+    .tier = Tier::fast, .run = [](const CheckContext&) {
+      const auto d = LineContactData::from_moes(10.0, 0.0);
+      const LineContactProblem p(d);
+      std::vector<double> H_c;
+      int attempts = 0, cycles = 0;
+      for (int levels : {9, 10, 11}) {
+        EhlOptions o;
+        o.coarsest_nodes = 17;
+        o.levels = levels;
+        const auto r = LineContactSolver(p, o).solve();
+        H_c.push_back(r.h_central * moes_units(d));
+        attempts = r.attempts;
+        cycles = r.cycles;
+      }
+      const double predicted = H_c[1] - 0.5 * (H_c[0] - H_c[1]);
+      return CheckValue{H_c[2], predicted, {{"H_c_4097", H_c[0]}, {"H_c_8193", H_c[1]},
+                                            {"attempts_16385", attempts}, {"cycles_16385", cycles}}};
+    }});
+
 const RegisterCheck continuation(CheckSpec{
     .id = "ehl.relaxation.continuation_M2_L22_5", .section = section, .solver = solver,
     .reference = "Moes film formula (film at dp/dx = 0)",
     .quantity = "H at M = 2, L = 22.5 (641 nodes), reached by the continuation in α", .unit = "-",
     .tolerance = {0, 0.1},
     .justification = "every multigrid scheme diverges from scratch at this point; the continuation "
-                     "(attempt 7) must reach it and land within Moes' fit plus the first-order "
+                     "(attempt 8) must reach it and land within Moes' fit plus the first-order "
                      "error, as the other Moes points (the map's solve of this point)",
     .tier = Tier::fast, .run = [](const CheckContext&) {
       const auto& map = moes_map();
