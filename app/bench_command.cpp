@@ -107,7 +107,8 @@ int bench_command(const BenchRequest& request) {
     fs::rename(temp, target);
   }
   for (const auto& [run, r] : record["ratios"].items())
-    std::cerr << fmt::format("{}: {:.3g} x baseline\n", run, r["ratio"].get<double>());
+    std::cerr << fmt::format("{}: {}{:.3g} x baseline\n", run, r.value("baseline_converged", true) ? "" : "< ",
+                             r["ratio"].get<double>());
   for (const auto& [family, s] : record["scaling"].items())
     std::cerr << fmt::format("{}: time ∝ nodes^{:.3g}\n", family, s["exponent"].get<double>());
   std::cout << target.string() << "\n";

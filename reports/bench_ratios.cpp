@@ -30,6 +30,10 @@ nlohmann::json side_by_side_ratios(const nlohmann::json& benchmarks) {
       samples[b["run_name"].get<std::string>()].push_back(real_seconds(b));
   std::map<std::string, double> times;
   for (const auto& [name, s] : samples) times[name] = reports::median(s);
+  std::map<std::string, double> unconverged;  // baseline run -> the residual it stopped at
+  for (const auto& b : benchmarks)
+    if (b.contains("converged") && b["converged"].is_number() && b["converged"].get<double>() == 0.0)
+      unconverged[b["run_name"].get<std::string>()] = b.value("residual", 0.0);
   const std::string suffix = "_baseline";
   nlohmann::json ratios = nlohmann::json::object();
   for (const auto& [name, time] : times) {
@@ -41,6 +45,10 @@ nlohmann::json side_by_side_ratios(const nlohmann::json& benchmarks) {
       if (it == times.end() || it->second <= 0.0) continue;
       ratios[name] = {{"baseline", baseline}, {"solver_time", time}, {"baseline_time", it->second},
                       {"ratio", time / it->second}};
+      if (const auto u = unconverged.find(baseline); u != unconverged.end()) {
+        ratios[name]["baseline_converged"] = false;
+        ratios[name]["baseline_residual"] = u->second;
+      }
       break;
     }
   }
@@ -51,7 +59,7 @@ nlohmann::json scaling_exponents(const nlohmann::json& benchmarks) {
   std::map<std::string, std::map<double, std::vector<double>>> samples;  // family -> nodes -> times
   for (const auto& b : benchmarks)
     if (b.value("run_type", "iteration") == "iteration" && b.contains("nodes") && b["nodes"].is_number() &&
-        b["nodes"].get<double>() > 0.0)
+        b["nodes"].get<double>() > 0.0 && b.value("converged", 1.0) != 0.0)
       samples[family(b["run_name"].get<std::string>())][b["nodes"].get<double>()].push_back(real_seconds(b));
   nlohmann::json out = nlohmann::json::object();
   for (const auto& [fam, by_nodes] : samples) {

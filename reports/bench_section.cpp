@@ -32,7 +32,11 @@ Note benchmark_note(const nlohmann::json& record) {
   }
   text += "\n| solver | baseline | ratio |\n|---|---|---|\n";
   for (const auto& [name, r] : record["ratios"].items())
-    text += fmt::format("| `{}` | `{}` | {:.3g} |\n", name, r["baseline"].get<std::string>(), r["ratio"].get<double>());
+    text += r.value("baseline_converged", true)
+                ? fmt::format("| `{}` | `{}` | {:.3g} |\n", name, r["baseline"].get<std::string>(), r["ratio"].get<double>())
+                : fmt::format("| `{}` | `{}` | < {:.3g} (the baseline stopped unconverged at residual {:.2g}) |\n", name,
+                              r["baseline"].get<std::string>(), r["ratio"].get<double>(),
+                              r["baseline_residual"].get<double>());
   // Records from before the scaling fit have no "scaling" key.
   if (record.contains("scaling") && !record["scaling"].empty()) {
     text += "\n| family | time ∝ nodes^p, fitted p | sizes | nodes |\n|---|---|---|---|\n";

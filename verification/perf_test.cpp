@@ -289,6 +289,19 @@ TEST(BenchRatios, UseSecondsAcrossTimeUnits) {
   EXPECT_DOUBLE_EQ(r["BM_X"]["ratio"].get<double>(), 2e-6 / 4e-3);
   EXPECT_DOUBLE_EQ(r["BM_Y/8"]["ratio"].get<double>(), 0.5);
   EXPECT_FALSE(r.contains("BM_X_baseline"));
+  EXPECT_FALSE(r["BM_X"].contains("baseline_converged"));
+}
+
+// A baseline stopped at its cap (counter converged = 0) marks the ratio as a bound.
+TEST(BenchRatios, MarksAnUnconvergedBaseline) {
+  const auto runs = nlohmann::json::parse(R"([
+    {"run_name": "BM_S/4097", "run_type": "iteration", "real_time": 0.2, "time_unit": "s"},
+    {"run_name": "BM_S_baseline/4097", "run_type": "iteration", "real_time": 20.0, "time_unit": "s",
+     "converged": 0, "residual": 0.012}])");
+  const auto r = gearbench::reports::side_by_side_ratios(runs);
+  EXPECT_DOUBLE_EQ(r["BM_S/4097"]["ratio"].get<double>(), 0.01);
+  EXPECT_FALSE(r["BM_S/4097"]["baseline_converged"].get<bool>());
+  EXPECT_DOUBLE_EQ(r["BM_S/4097"]["baseline_residual"].get<double>(), 0.012);
 }
 
 // The scaling fit recovers the exponent of time ∝ nodes^p across time units, ignores
@@ -299,6 +312,8 @@ TEST(BenchScaling, FitsTheExponentOfTimeAgainstNodes) {
     runs.push_back({{"run_name", "BM_S/" + std::to_string(static_cast<int>(n))}, {"run_type", "iteration"},
                     {"real_time", 3.0 * std::pow(n, 1.2) * (n > 1000 ? 1e-3 : 1.0)},
                     {"time_unit", n > 1000 ? "ms" : "us"}, {"nodes", n}});
+  runs.push_back({{"run_name", "BM_S/16385"}, {"run_type", "iteration"}, {"real_time", 1.0}, {"time_unit", "s"},
+                  {"nodes", 16385.0}, {"converged", 0.0}});  // stopped at a cap: not a point of the fit
   runs.push_back({{"run_name", "BM_T/1"}, {"run_type", "iteration"}, {"real_time", 1.0}, {"time_unit", "ms"}, {"nodes", 9.0}});
   runs.push_back({{"run_name", "BM_T/2"}, {"run_type", "iteration"}, {"real_time", 2.0}, {"time_unit", "ms"}, {"nodes", 17.0}});
   const auto s = gearbench::reports::scaling_exponents(runs);
