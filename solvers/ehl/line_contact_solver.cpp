@@ -121,7 +121,7 @@ EhlResult LineContactSolver::solve_with_fallbacks(const LineContactProblem& prob
 // depend on α). A step that fails is halved and retried; one that converges lets the next
 // grow by half. The final solve is the given problem's, to the same tolerance.
 EhlResult LineContactSolver::solve_by_continuation() const {
-  constexpr double first_fraction = 0.5, first_step = 0.125, smallest_step = 1.0 / 128.0;
+  constexpr double first_fraction = 0.5, first_step = 0.125, smallest_step = 1.0 / 512.0;
   const auto scaled = [this](double fraction) {
     LineContactData d = problem_.data();
     d.pressure_viscosity *= fraction;
