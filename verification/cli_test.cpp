@@ -230,6 +230,20 @@ TEST(Cli, EhlLineRunsAndReportsNonConvergence) {
   fs::remove(out);
 }
 
+// Heavy loads on the default grid: the film changes by tens of per cent from the next-coarser
+// grid, and the result says so; a converged point does not carry the note.
+TEST(Cli, EhlLineSaysWhenTheFilmIsNotGridConverged) {
+  const auto heavy = run_gearbench("run " + write_case("ehl_heavy", R"({"kind": "ehl_line", "moes": {"M": 300, "L": 0}})"));
+  ASSERT_EQ(heavy.exit_code, 0) << heavy.err;
+  const auto h = json::parse(heavy.out);
+  EXPECT_GT(h["diagnostics"]["discretisation_error"]["h_min_relative_change"].get<double>(), 0.05);
+  EXPECT_NE(h["notes"].dump().find("not grid-converged"), std::string::npos) << h["notes"].dump();
+
+  const auto light = run_gearbench("run " + write_case("ehl_light", R"({"kind": "ehl_line", "moes": {"M": 20, "L": 10}})"));
+  ASSERT_EQ(light.exit_code, 0) << light.err;
+  EXPECT_EQ(json::parse(light.out)["notes"].dump().find("not grid-converged"), std::string::npos);
+}
+
 TEST(Cli, EhlLineBadInput) {
   const std::pair<std::string, std::string> cases[] = {
       {R"({"kind": "ehl_line", "moes": {"M": 20, "L": 10}, "contact": {}})", "give either \"moes\" or"},

@@ -437,6 +437,7 @@ class FasMultigrid::Impl {
     fill_figures(l, tmp);
     coarse_h_min_ = tmp.h_min;
     coarse_p_max_ = tmp.p_max;
+    has_coarse_ = true;
   }
 
   void fill_figures(const Level& l, EhlResult& r) const {
@@ -478,7 +479,8 @@ class FasMultigrid::Impl {
     r.friction_coefficient = force / d.load_per_length;
     r.coarse_h_min = coarse_h_min_;
     r.coarse_p_max = coarse_p_max_;
-    if (coarse_h_min_ > 0.0 && r.h_min > 0.0 && r.p_max > 0.0) {
+    // A coarse film at or below zero (heavy loads on coarse grids) gives a change above 1.
+    if (has_coarse_ && r.h_min > 0.0 && r.p_max > 0.0) {
       r.h_min_change = std::abs(r.h_min - coarse_h_min_) / r.h_min;
       r.p_max_change = std::abs(r.p_max - coarse_p_max_) / r.p_max;
     }
@@ -493,6 +495,7 @@ class FasMultigrid::Impl {
   double film_guess_ = 1.0;  ///< expected film in these units (Moes' isoviscous asymptotes)
   double work_units_ = 0.0;
   double coarse_h_min_ = 0.0, coarse_p_max_ = 0.0;
+  bool has_coarse_ = false;  ///< a solution on the next-coarser grid was recorded (full multigrid)
 };
 
 

@@ -10,6 +10,7 @@
 //     point by point;
 //   - the force balance closes through H0 on the coarsest grid with the FAS right-hand side;
 //   - the deformation integral by zero-padded FFT convolution (O(n log n) per sweep).
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -85,8 +86,10 @@ struct EhlResult {
   std::vector<double> seconds_per_level;
   double seconds = 0.0;
   /// Change of H_min and P_max between the solutions on the two finest grids (relative):
-  /// the discretisation-error estimate.
-  double h_min_change = 0.0, p_max_change = 0.0;
+  /// the discretisation-error estimate. NaN where there is none: a warm-started solve (a
+  /// time step, a thermal iteration, the continuation in α) or a single grid.
+  double h_min_change = std::numeric_limits<double>::quiet_NaN();
+  double p_max_change = std::numeric_limits<double>::quiet_NaN();
   double coarse_h_min = 0.0, coarse_p_max = 0.0;  ///< on the next-coarser grid [m], [Pa]
 
   [[nodiscard]] std::string summary() const;
