@@ -79,7 +79,7 @@ std::string LineContactSolver::describe(const EhlOptions& o) {
 
 // Where line W-cycles converge they need ~10–20 cycles; near the limits of the (M, L) map a
 // scheme can diverge where a more cautious one converges (on 2561 nodes and more, L ≳ 15
-// needs the held coarse nodes; M = 1000, L = 0 needs ω_J = 0.1; M = 2, L = 20 to 25 on 641
+// needs the held coarse nodes; M = 1000, L = 0 needs ω_J = 0.1; M = 2, L = 20 and 22.5 on 641
 // nodes need the continuation in α).
 // A failed solve is therefore repeated from scratch with the next fallback, and the result
 // says which scheme counted and after how many attempts.
