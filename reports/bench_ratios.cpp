@@ -15,6 +15,11 @@ namespace gearbench::reports {
 namespace {
 /// Benchmark family: the name without its arguments ("BM_X/101" -> "BM_X").
 std::string family(const std::string& run_name) { return run_name.substr(0, run_name.find('/')); }
+
+/// A run that stopped at a cap before converging says so with the counter converged = 0.
+bool stopped_unconverged(const nlohmann::json& run) {
+  return run.contains("converged") && run["converged"].is_number() && run["converged"].get<double>() == 0.0;
+}
 }  // namespace
 
 double real_seconds(const nlohmann::json& run) {
@@ -32,7 +37,7 @@ nlohmann::json side_by_side_ratios(const nlohmann::json& benchmarks) {
   for (const auto& [name, s] : samples) times[name] = reports::median(s);
   std::map<std::string, double> unconverged;  // baseline run -> the residual it stopped at
   for (const auto& b : benchmarks)
-    if (b.contains("converged") && b["converged"].is_number() && b["converged"].get<double>() == 0.0)
+    if (stopped_unconverged(b))
       unconverged[b["run_name"].get<std::string>()] = b.value("residual", 0.0);
   const std::string suffix = "_baseline";
   nlohmann::json ratios = nlohmann::json::object();
@@ -59,7 +64,7 @@ nlohmann::json scaling_exponents(const nlohmann::json& benchmarks) {
   std::map<std::string, std::map<double, std::vector<double>>> samples;  // family -> nodes -> times
   for (const auto& b : benchmarks)
     if (b.value("run_type", "iteration") == "iteration" && b.contains("nodes") && b["nodes"].is_number() &&
-        b["nodes"].get<double>() > 0.0 && b.value("converged", 1.0) != 0.0)
+        b["nodes"].get<double>() > 0.0 && !stopped_unconverged(b))
       samples[family(b["run_name"].get<std::string>())][b["nodes"].get<double>()].push_back(real_seconds(b));
   nlohmann::json out = nlohmann::json::object();
   for (const auto& [fam, by_nodes] : samples) {

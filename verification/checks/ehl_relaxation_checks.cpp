@@ -40,8 +40,14 @@ CheckValue against_moes(double M, double L, const EhlResult& r, nlohmann::json d
   return CheckValue{moes_film(M, L, r), reference::moes_H(M, L), std::move(diagnostics)};
 }
 
-nlohmann::json scheme_diagnostics(const EhlResult& r) {
-  return {{"scheme", r.cycle_type}, {"attempts", r.attempts}, {"cycles", r.cycles}};
+/// The Moes point (M, L) on `levels` levels by the default solver with its fallbacks, against
+/// Moes' formula, with the scheme that counted.
+CheckValue through_fallbacks(double M, double L, int levels) {
+  const LineContactProblem p(LineContactData::from_moes(M, L));
+  EhlOptions o;
+  o.levels = levels;
+  const auto r = LineContactSolver(p, o).try_solve();
+  return against_moes(M, L, r, {{"scheme", r.cycle_type}, {"attempts", r.attempts}, {"cycles", r.cycles}});
 }
 
 const RegisterCheck same_solution(CheckSpec{
@@ -104,13 +110,8 @@ const RegisterCheck rigid_corner(CheckSpec{
     .justification = "the corner where point relaxation stalled near 1e-6 and line relaxation "
                      "with ω_J 0.2 diverges: the solver must reach it (ω_J 0.1) and land within "
                      "Moes' fit plus the first-order error, as the other Moes points",
-    .tier = Tier::fast, .run = [](const CheckContext&) {
-      const LineContactProblem p(LineContactData::from_moes(1000.0, 0.0));
-      EhlOptions o;
-      o.levels = 5;
-      const auto r = LineContactSolver(p, o).try_solve();
-      return against_moes(1000.0, 0.0, r, scheme_diagnostics(r));
-    }});
+    .tier = Tier::fast,
+    .run = [](const CheckContext&) { return through_fallbacks(1000.0, 0.0, 5); }});
 
 const RegisterCheck wider_jacobi_fallback(CheckSpec{
     .id = "ehl.relaxation.fallback_M5_L7_5_fine", .section = section, .solver = solver,
@@ -121,13 +122,8 @@ const RegisterCheck wider_jacobi_fallback(CheckSpec{
                      "or not, ω_J 0.2 or 0.1) do not converge and the ξ = 100 scheme does; it "
                      "must land within Moes' fit plus the first-order error, as the other Moes "
                      "points",
-    .tier = Tier::fast, .run = [](const CheckContext&) {
-      const LineContactProblem p(LineContactData::from_moes(5.0, 7.5));
-      EhlOptions o;
-      o.levels = 7;
-      const auto r = LineContactSolver(p, o).try_solve();
-      return against_moes(5.0, 7.5, r, scheme_diagnostics(r));
-    }});
+    .tier = Tier::fast,
+    .run = [](const CheckContext&) { return through_fallbacks(5.0, 7.5, 7); }});
 
 const RegisterCheck held_coarse_nodes(CheckSpec{
     .id = "ehl.relaxation.hold_unresolved_M10_L17_5_fine", .section = section, .solver = solver,
