@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "interrupt.h"
 #include "model/errors.h"
+#include "outcome.h"
 
 namespace gearbench::app {
 
@@ -28,10 +29,11 @@ int verify_command(const std::string& tier, const std::string& out_dir, const st
     const DeferInterrupts defer;  // the report folder appears whole or not at all
     return reports::write_report(report, out_dir);
   }();
-  std::cerr << fmt::format("{} of {} checks pass\n", report.checks.size() - report.failures(),
-                           report.checks.size());
+  const auto counts = report.counts();
+  std::cerr << reports::headline(counts) << "\n";
+  for (const auto& f : report.section_failures) std::cerr << fmt::format("section {} FAILED: {}\n", f.id, f.error);
   std::cout << folder << "/report.md\n";
-  return report.failures() == 0 ? exit_ok : exit_failed;
+  return verification::gate_passes(counts) ? exit_ok : exit_failed;
 }
 
 }  // namespace gearbench::app

@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
-#include <functional>
 #include <map>
 #include <thread>
 #include <unistd.h>
@@ -25,27 +24,36 @@ double CheckRecord::rel_error() const {
   return reference_value != 0.0 ? abs_error() / std::abs(reference_value) : abs_error();
 }
 
-bool CheckRecord::passed() const {
-  return error.empty() && std::isfinite(value) &&
-         abs_error() <= tolerance.abs + tolerance.rel * std::abs(reference_value);
+std::string outcome_name(Outcome outcome) {
+  switch (outcome) {
+    case Outcome::pass: return "pass";
+    case Outcome::reproduced: return "reproduced";
+    case Outcome::missed: return "missed";
+    case Outcome::fail: break;
+  }
+  return "fail";
 }
 
-bool CheckRecord::failed() const {
-  if (!error.empty() || !std::isfinite(value)) return true;
-  if (!reproduction) return !passed();
-  return std::abs(value - recorded) > recorded_tolerance * std::abs(recorded);
-}
-
-std::string CheckRecord::status() const {
-  if (!reproduction) return passed() ? "pass" : "fail";
-  if (failed()) return "fail";
-  return passed() ? "reproduced" : "missed";
-}
-
-int Report::failures() const {
-  int n = 0;
-  for (const auto& c : checks) n += c.failed() ? 1 : 0;
+OutcomeCounts Report::counts() const {
+  OutcomeCounts n;
+  n.checks = static_cast<int>(checks.size());
+  for (const auto& c : checks) {
+    switch (c.outcome) {
+      case Outcome::pass: ++n.pass; break;
+      case Outcome::reproduced: ++n.reproduced; break;
+      case Outcome::missed: ++n.missed; break;
+      case Outcome::fail: ++n.failed; break;
+    }
+  }
+  n.sections_failed = static_cast<int>(section_failures.size());
   return n;
+}
+
+std::string headline(const OutcomeCounts& n) {
+  std::string line = fmt::format("{} checks: {} pass, {} reproduced, {} missed, {} failed", n.checks, n.pass,
+                                 n.reproduced, n.missed, n.failed);
+  if (n.sections_failed > 0) line += fmt::format("; {} report section(s) could not be built", n.sections_failed);
+  return line;
 }
 
 namespace {
@@ -77,17 +85,6 @@ long memory_gib() {
     std::getline(in, key);
   }
   return std::lround(static_cast<double>(kib) / (1024.0 * 1024.0));
-}
-
-/// 64-bit FNV-1a (Fowler, Noll, Vo; IETF draft-eastlake-fnv-17, section 2): stable across
-/// compilers and standard libraries, unlike std::hash, so committed fingerprints stay valid.
-std::uint64_t fnv1a(const std::string& text) {
-  std::uint64_t h = 14695981039346656037ull;
-  for (unsigned char c : text) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
 }
 
 json dependency_versions() {
@@ -132,7 +129,37 @@ std::string format_number(const json& v) {
   return fmt::format("{:.4e}", x);
 }
 
+/// The headline and the summary table: every outcome counted on its own.
+std::string headline_markdown(const OutcomeCounts& n) {
+  std::string md = fmt::format("**{}.**", headline(n));
+  if (n.missed > 0)
+    md += " A missed seed reproduction is a finding, not a failure: the figure reached is recorded "
+          "and the gap explained in its section.";
+  md += fmt::format("\n\n| outcome | checks |\n|---|---|\n| pass | {} |\n| reproduced | {} |\n| missed | {} |\n"
+                    "| failed | {} |\n| sections not built | {} |\n\n",
+                    n.pass, n.reproduced, n.missed, n.failed, n.sections_failed);
+  return md;
+}
+
+std::string section_failures_markdown(const std::vector<SectionFailure>& failures) {
+  if (failures.empty()) return {};
+  std::string md = "## Sections that could not be built\n\n";
+  for (const auto& f : failures) md += fmt::format("- **FAIL** `{}`: {}\n", f.id, f.error);
+  return md + "\n";
+}
+
 }  // namespace
+
+/// Stable across compilers and standard libraries, unlike std::hash, so committed
+/// fingerprints stay valid: offset basis 14695981039346656037, prime 1099511628211.
+std::uint64_t fnv1a64(const std::string& text) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
 
 json provenance() {
   const unsigned cores = std::thread::hardware_concurrency();
@@ -142,7 +169,7 @@ json provenance() {
       {"build", {{"compiler", build::compiler()}, {"build_type", build::build_type()},
                  {"flags", build::cxx_flags()}, {"dependencies", dependency_versions()}}},
       {"machine", {{"cpu_model", cpu_model()}, {"cores", cores}, {"memory_GiB", memory_gib()},
-                   {"fingerprint", machine_fingerprint()},
+                   {"fingerprint", machine_fingerprint()}, {"fingerprint_digest", fingerprint_digest},
                    {"hardware_fingerprint", hardware_fingerprint()}}},
       {"created_utc", utc_now("%Y-%m-%dT%H:%M:%SZ")},
   };
@@ -152,11 +179,11 @@ std::string machine_fingerprint() {
   const std::string key = fmt::format("{}|{}|{}|{}|{}", cpu_model(),
                                       std::thread::hardware_concurrency(), build::compiler(),
                                       build::build_type(), build::cxx_flags());
-  return fmt::format("{:016x}", std::hash<std::string>{}(key));
+  return fmt::format("{:016x}", fnv1a64(key));
 }
 
 std::string hardware_fingerprint() {
-  return fmt::format("{:016x}", fnv1a(fmt::format("{}|{}|{}", cpu_model(), std::thread::hardware_concurrency(),
+  return fmt::format("{:016x}", fnv1a64(fmt::format("{}|{}|{}", cpu_model(), std::thread::hardware_concurrency(),
                                                   memory_gib())));
 }
 
@@ -176,7 +203,7 @@ json to_json(const Report& report) {
         {"rel_error", c.error.empty() ? number(c.rel_error()) : json(nullptr)},
         {"tolerance", {{"abs", c.tolerance.abs}, {"rel", c.tolerance.rel},
                        {"justification", c.justification}}},
-        {"status", c.status()},
+        {"status", outcome_name(c.outcome)},
         {"seconds", number(c.seconds)},
         {"diagnostics", c.diagnostics},
     });
@@ -206,11 +233,14 @@ json to_json(const Report& report) {
   json notes = json::array();
   for (const auto& n : report.notes) notes.push_back({{"section", n.section}, {"text", n.text}});
   json out = provenance();
-  out["schema_version"] = 1;
+  out["schema_version"] = 2;  // 2: summary by outcome, section_failures, fingerprint_digest
   out["tier"] = report.tier;
-  out["summary"] = {{"checks", report.checks.size()},
-                    {"passed", report.checks.size() - static_cast<std::size_t>(report.failures())},
-                    {"failed", report.failures()}};
+  const auto n = report.counts();
+  out["summary"] = {{"checks", n.checks}, {"pass", n.pass}, {"reproduced", n.reproduced},
+                    {"missed", n.missed}, {"failed", n.failed}, {"sections_failed", n.sections_failed}};
+  json failures = json::array();
+  for (const auto& f : report.section_failures) failures.push_back({{"section", f.id}, {"error", f.error}});
+  out["section_failures"] = failures;
   out["checks"] = checks;
   out["figures"] = figures;
   out["notes"] = notes;
@@ -229,14 +259,8 @@ std::string to_markdown(const Report& report, const json& meta) {
                     meta["machine"]["cpu_model"].get<std::string>(),
                     meta["machine"]["cores"].get<unsigned>(),
                     meta["created_utc"].get<std::string>());
-  md += fmt::format("**{} of {} checks pass.**", report.checks.size() - report.failures(),
-                    report.checks.size());
-  int missed = 0;
-  for (const auto& c : report.checks) missed += c.reproduction && !c.failed() && !c.passed();
-  if (missed > 0)
-    md += fmt::format(" {} seed reproduction(s) miss the paper's figure: the figure reached is "
-                      "recorded and the gap explained in its section.", missed);
-  md += "\n\n";
+  md += headline_markdown(report.counts());
+  md += section_failures_markdown(report.section_failures);
 
   md += "## Overview\n\n| check | solver | reference | quantity | value | reference value | "
         "deviation | tolerance | status |\n|---|---|---|---|---|---|---|---|---|\n";

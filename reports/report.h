@@ -2,6 +2,7 @@
 // A versioned verification report: every figure a solver produced, compared with an
 // independent reference under a stated tolerance, with provenance. Written as a folder
 // <UTC date>_<short sha>/ holding report.json, report.md and figures/*.svg.
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -13,6 +14,12 @@ struct Tolerance {
   double abs = 0.0;
   double rel = 0.0;
 };
+
+/// What a check found. The rules that decide it live in verification/ (outcome.h); a report
+/// stores and renders the outcome.
+enum class Outcome { pass, reproduced, missed, fail };
+/// "pass", "reproduced", "missed", "fail": the `status` of a check in report.json.
+std::string outcome_name(Outcome outcome);
 
 struct CheckRecord {
   std::string id;             ///< stable identifier, e.g. "geometry.seed004.contact_ratio"
@@ -28,20 +35,16 @@ struct CheckRecord {
   double seconds = 0.0;
   nlohmann::json diagnostics = nlohmann::json::object();
   std::string error;          ///< set when the check threw instead of producing a value
-  /// A seed reproduction: reference_value is the paper's figure. Missing it is recorded
-  /// and explained, not a failure; drifting from the figure reached when the gap was
-  /// analysed (`recorded`, within `recorded_tolerance` relative) is.
+  /// A seed reproduction: reference_value is the paper's figure, `recorded` the figure
+  /// reached when the gap to it was analysed, `recorded_tolerance` the relative drift from
+  /// it that counts as a regression.
   bool reproduction = false;
   double recorded = 0.0;
   double recorded_tolerance = 0.0;
+  Outcome outcome = Outcome::fail;  ///< set by verification::classify
 
   [[nodiscard]] double abs_error() const;
   [[nodiscard]] double rel_error() const;
-  /// Within tolerance of the reference (for a reproduction: the paper's figure reproduced).
-  [[nodiscard]] bool passed() const;
-  /// What gates: a check outside tolerance, a reproduction that drifted, or an error.
-  [[nodiscard]] bool failed() const;
-  [[nodiscard]] std::string status() const;
 };
 
 struct Series {
@@ -74,19 +77,45 @@ struct Note {
   std::string text;
 };
 
+/// A report section whose figures and notes could not be built.
+struct SectionFailure {
+  std::string id;
+  std::string error;
+};
+
+/// How many checks ended in each outcome, and how many sections could not be built.
+struct OutcomeCounts {
+  int checks = 0;
+  int pass = 0;
+  int reproduced = 0;
+  int missed = 0;
+  int failed = 0;
+  int sections_failed = 0;
+};
+
 struct Report {
   std::string tier;
   std::vector<CheckRecord> checks;
   std::vector<Figure> figures;
   std::vector<Note> notes;
+  std::vector<SectionFailure> section_failures;
 
-  [[nodiscard]] int failures() const;
+  [[nodiscard]] OutcomeCounts counts() const;
 };
+
+/// One line with every count, e.g. "170 checks: 150 pass, 6 reproduced, 14 missed, 0 failed".
+std::string headline(const OutcomeCounts& counts);
 
 /// Code, build and machine provenance as a JSON object.
 nlohmann::json provenance();
-/// A fingerprint of the machine and toolchain: timings are comparable only when equal.
+/// A fingerprint of the machine and toolchain (FNV-1a 64, `fingerprint_digest`): timings
+/// are comparable only when equal.
 std::string machine_fingerprint();
+/// The digest of machine_fingerprint(), recorded next to it in a report. Reports written
+/// before it was recorded carry an std::hash fingerprint, which is not stable between builds.
+inline constexpr const char* fingerprint_digest = "fnv1a64";
+/// 64-bit FNV-1a of text (Fowler, Noll, Vo; IETF draft-eastlake-fnv, section 2).
+std::uint64_t fnv1a64(const std::string& text);
 /// A stable hash of the hardware alone (CPU model, core count, memory): benchmark times
 /// are compared across commits only between runs with the same one.
 std::string hardware_fingerprint();

@@ -14,44 +14,24 @@
 namespace gearbench::reports {
 namespace {
 
-CheckRecord record(const std::string& id, double value, double reference, double rel) {
+using nlohmann::json;
+
+/// A record as verification::classify would leave it (the rules are tested in outcome_test).
+CheckRecord record(const std::string& id, double value, double reference, Outcome outcome) {
   CheckRecord c;
   c.id = id;
   c.section = "s";
   c.value = value;
   c.reference_value = reference;
-  c.tolerance = {0.0, rel};
+  c.tolerance = {0.0, 1e-6};
+  c.outcome = outcome;
   return c;
-}
-
-TEST(CheckRecord, ToleranceDecides) {
-  EXPECT_TRUE(record("a", 1.0005, 1.0, 1e-3).passed());
-  EXPECT_FALSE(record("a", 1.002, 1.0, 1e-3).passed());
-  EXPECT_FALSE(record("a", std::nan(""), 1.0, 1e-3).passed());
-  auto thrown = record("a", 1.0, 1.0, 1e-3);
-  thrown.error = "solver threw";
-  EXPECT_FALSE(thrown.passed());
-}
-
-TEST(CheckRecord, ReproductionMissIsRecordedNotFailed) {
-  auto r = record("seed", 30.0, 14.3, 0.05);  // paper 14.3, reached 30
-  r.reproduction = true;
-  r.recorded = 30.0;
-  r.recorded_tolerance = 0.01;
-  EXPECT_FALSE(r.passed());
-  EXPECT_FALSE(r.failed());
-  EXPECT_EQ(r.status(), "missed");
-  r.value = 31.0;  // drifted from the recorded figure: a regression
-  EXPECT_TRUE(r.failed());
-  EXPECT_EQ(r.status(), "fail");
-  r.value = r.recorded = 14.5;  // within 5 % of the paper
-  EXPECT_EQ(r.status(), "reproduced");
 }
 
 TEST(ReportJson, NonFiniteBecomesNull) {
   Report r;
   r.tier = "fast";
-  r.checks.push_back(record("nan", std::nan(""), 1.0, 1e-3));
+  r.checks.push_back(record("nan", std::nan(""), 1.0, Outcome::fail));
   r.figures.push_back({"f", "s", "t", "x", "y", {{"l", {0.0, 1.0}, {1.0, INFINITY}}}});
   const auto j = to_json(r);
   EXPECT_TRUE(j["checks"][0]["value"].is_null());
@@ -63,8 +43,8 @@ TEST(ReportJson, NonFiniteBecomesNull) {
 
 TEST(Compare, FlagsRegressionsChangesAndTimings) {
   Report before, after;
-  before.checks = {record("x", 1.0, 1.0, 1e-6), record("y", 2.0, 2.0, 1e-6)};
-  after.checks = {record("x", 1.5, 1.0, 1e-6), record("z", 2.0, 2.0, 1e-6)};
+  before.checks = {record("x", 1.0, 1.0, Outcome::pass), record("y", 2.0, 2.0, Outcome::pass)};
+  after.checks = {record("x", 1.5, 1.0, Outcome::fail), record("z", 2.0, 2.0, Outcome::pass)};
   before.checks[0].seconds = 1.0;
   after.checks[0].seconds = 1.5;
   const auto c = compare_reports(to_json(before), to_json(after));
@@ -77,12 +57,75 @@ TEST(Compare, FlagsRegressionsChangesAndTimings) {
   EXPECT_EQ(c.slower.size(), 1u);
 }
 
+TEST(Compare, FingerprintsOfDifferentDigestsNeverMatch) {
+  Report r;
+  json legacy = to_json(r);  // a schema-1 report: std::hash fingerprint, no digest recorded
+  legacy["machine"].erase("fingerprint_digest");
+  json now = to_json(r);
+  legacy["machine"]["fingerprint"] = now["machine"]["fingerprint"];
+  EXPECT_FALSE(compare_reports(legacy, now).same_machine);
+  EXPECT_TRUE(compare_reports(legacy, legacy).same_machine);  // old against old: as before
+  EXPECT_TRUE(compare_reports(now, now).same_machine);
+}
+
+TEST(Fingerprint, Fnv1a64KnownVectors) {
+  // The FNV test suite (draft-eastlake-fnv, test vectors for FNV-1a 64).
+  EXPECT_EQ(fnv1a64(""), 0xcbf29ce484222325ull);
+  EXPECT_EQ(fnv1a64("a"), 0xaf63dc4c8601ec8cull);
+  EXPECT_EQ(fnv1a64("foobar"), 0x85944171f73967e8ull);
+}
+
+TEST(Fingerprint, RecordedWithItsDigest) {
+  const auto machine = provenance()["machine"];
+  EXPECT_EQ(machine["fingerprint_digest"], "fnv1a64");
+  EXPECT_EQ(machine["fingerprint"].get<std::string>().size(), 16u);
+  EXPECT_EQ(machine["fingerprint"], machine_fingerprint());
+}
+
+/// One check of every outcome and one section that could not be built.
+Report every_outcome() {
+  Report r;
+  r.tier = "fast";
+  r.checks = {record("p", 1.0, 1.0, Outcome::pass), record("r", 1.0, 1.0, Outcome::reproduced),
+              record("m", 2.0, 1.0, Outcome::missed), record("f", 3.0, 1.0, Outcome::fail)};
+  r.section_failures.push_back({"broken_section", "figure data missing"});
+  return r;
+}
+
+TEST(Headline, CountsEveryOutcomeSeparately) {
+  const auto n = every_outcome().counts();
+  EXPECT_EQ(n.checks, 4);
+  EXPECT_EQ(n.pass, 1);
+  EXPECT_EQ(n.reproduced, 1);
+  EXPECT_EQ(n.missed, 1);
+  EXPECT_EQ(n.failed, 1);
+  EXPECT_EQ(n.sections_failed, 1);
+  EXPECT_EQ(headline(n),
+            "4 checks: 1 pass, 1 reproduced, 1 missed, 1 failed; 1 report section(s) could not be built");
+}
+
+TEST(Headline, JsonAndMarkdownCarryTheCounts) {
+  const auto report = every_outcome();
+  const auto j = to_json(report);
+  EXPECT_EQ(j["summary"]["pass"], 1);
+  EXPECT_EQ(j["summary"]["reproduced"], 1);
+  EXPECT_EQ(j["summary"]["missed"], 1);
+  EXPECT_EQ(j["summary"]["failed"], 1);
+  EXPECT_EQ(j["summary"]["sections_failed"], 1);
+  EXPECT_EQ(j["section_failures"][0]["section"], "broken_section");
+  const auto md = to_markdown(report, j);
+  EXPECT_NE(md.find(headline(report.counts())), std::string::npos);
+  EXPECT_NE(md.find("| missed | 1 |"), std::string::npos);
+  EXPECT_NE(md.find("**FAIL** `broken_section`: figure data missing"), std::string::npos);
+  EXPECT_EQ(md.find(" of 4 checks pass"), std::string::npos);
+}
+
 TEST(WriteReport, NeverOverwritesAndLeavesNoTemporary) {
   const auto dir = std::filesystem::temp_directory_path() / ("gearbench_report_test_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   Report r;
   r.tier = "fast";
-  r.checks.push_back(record("x", 1.0, 1.0, 1e-6));
+  r.checks.push_back(record("x", 1.0, 1.0, Outcome::pass));
   const auto first = write_report(r, dir.string());
   const auto second = write_report(r, dir.string());
   EXPECT_NE(first, second);

@@ -6,6 +6,7 @@
 #include <regex>
 
 #include "model/errors.h"
+#include "outcome.h"
 
 namespace gearbench::verification {
 
@@ -65,7 +66,12 @@ reports::CheckRecord run_check(const CheckSpec& check, const CheckContext& conte
     r.error = e.what();
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.outcome = classify(r);
   return r;
+}
+
+void build_section(const SectionSpec& section, const CheckContext& context, reports::Report& report) {
+  build_section(section.id, [&](reports::Report& r) { section.add(context, r); }, report);
 }
 
 namespace {
@@ -102,15 +108,9 @@ reports::Report run_verification(Tier tier, const CheckContext& context,
     report.checks.push_back(run_check(*checks[i], context));
     const auto& r = report.checks.back();
     progress(fmt::format("[{}/{}] {} ... {} ({:.2f} s)", i + 1, checks.size(), r.id,
-                         r.status(), r.seconds));
+                         reports::outcome_name(r.outcome), r.seconds));
   }
-  for (const auto* section : sections) {
-    try {
-      section->add(context, report);
-    } catch (const std::exception& e) {
-      report.notes.push_back({section->id, fmt::format("Section failed: {}", e.what())});
-    }
-  }
+  for (const auto* section : sections) build_section(*section, context, report);
   return report;
 }
 

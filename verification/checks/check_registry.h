@@ -78,8 +78,13 @@ struct RegisterSection {
   explicit RegisterSection(SectionSpec section) { Registry::instance().add(std::move(section)); }
 };
 
-/// Runs one check, timing it and turning an exception into a failed record.
+/// Runs one check, timing it, turning an exception into a failed record, and classifies it
+/// (outcome.h).
 reports::CheckRecord run_check(const CheckSpec& check, const CheckContext& context);
+
+/// Adds one section's figures and notes; a section that throws is a section failure of the
+/// report (outcome.h), which gates like a failed check.
+void build_section(const SectionSpec& section, const CheckContext& context, reports::Report& report);
 
 /// Runs the tier's checks and sections into a report; `progress` gets one line per check.
 /// A non-empty `only` (an ECMAScript regular expression) keeps the checks and sections whose
