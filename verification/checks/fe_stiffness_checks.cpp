@@ -236,6 +236,7 @@ struct CrackSweep {
   std::vector<std::vector<double>> fe_loss, em_loss;  ///< [length][position]
   std::vector<std::vector<double>> fe_tooth;     ///< pinion tooth compliance [m/N] [length][position]
   double max_change = 0.0;                       ///< largest last relative change of a solve
+  double fe_tolerance = 0.0;                     ///< the FE solves' relative tolerance
   double min_probe_to_crack = 1.0;               ///< closest probe to the slit [m]
   double fe_seconds = 0.0;
 };
@@ -249,6 +250,7 @@ CrackSweep crack_sweep(const model::GearCase& gc, const std::vector<double>& len
   const std::array<double, 2> bore{0.5 * g.radii(0).root, 0.5 * g.radii(1).root};
   CrackSweep c;
   c.lengths = lengths;
+  c.fe_tolerance = tolerance;
   std::vector<double> fe_pair0, em_pair0, wheel;
   std::vector<fe::ToothCompliance> healthy_pinion;
   for (const double q : lengths) {
@@ -320,12 +322,16 @@ nlohmann::json crack_table(const CrackSweep& c) {
           {"fe_seconds", c.fe_seconds}};
 }
 
-/// Steps q_k → q_{k+1} at which the FE pinion compliance fails to grow, at every position.
+/// Steps q_k → q_{k+1} at which the FE pinion compliance fails to grow by more than the FE
+/// tolerance (relative), at every position: growth within the FE's own error proves nothing.
 CheckValue fe_non_monotonic(const CrackSweep& c) {
   int bad = 0;
   for (std::size_t i = 0; i < c.s.size(); ++i)
-    for (std::size_t k = 1; k < c.lengths.size(); ++k) bad += c.fe_tooth[k][i] > c.fe_tooth[k - 1][i] ? 0 : 1;
-  return {static_cast<double>(bad), 0.0, crack_table(c)};
+    for (std::size_t k = 1; k < c.lengths.size(); ++k)
+      bad += c.fe_tooth[k][i] > c.fe_tooth[k - 1][i] * (1.0 + c.fe_tolerance) ? 0 : 1;
+  auto d = crack_table(c);
+  d["fe_tolerance"] = c.fe_tolerance;
+  return {static_cast<double>(bad), 0.0, d};
 }
 
 /// Largest |FE loss − energy loss| of the pair stiffness over lengths and positions where
@@ -358,7 +364,8 @@ CheckValue crack_loss_gap(const CrackSweep& c) {
 
 // Monotonic loss: a longer slit removes material from the load path, so the FE compliance
 // must grow with q (Castigliano: cutting a body never stiffens it). Exact count, tolerance 0:
-// the steps (1, 1, 0.5 mm) change the compliance by far more than the FE tolerance.
+// a step counts as growth only when it exceeds the FE tolerance, so the order shown is not
+// FE error (at A + p_b the steps grow it by 3.6, 38 and 42 % against the 1 % tolerance).
 // FE against the energy method: the loss is a difference within each model, so the healthy
 // pair's common-mode parts (Hertz, foundation) cancel to first order; the a priori band is
 // 5 points of pair stiffness (a third of seed 003's headline 14.3 % loss), set before the
@@ -377,9 +384,11 @@ const bool crack_checks = [] {
     Registry::instance().add(CheckSpec{
         .id = "fe_tooth.crack." + tag + ".monotonic", .section = section, .solver = "fe_tooth",
         .reference = "Castigliano: a longer cut is never stiffer",
-        .quantity = "steps q → q' (0, 1, 2, 2.5 mm) where the FE pinion compliance does not grow",
+        .quantity = "steps q → q' (0, 1, 2, 2.5 mm) where the FE pinion compliance does not grow by more "
+                    "than the FE tolerance",
         .unit = "-", .tolerance = {0.0, 0.0},
-        .justification = "exact: each step changes the compliance by far more than the FE tolerance",
+        .justification = "exact (Castigliano), once each step must exceed the FE tolerance: the order is then "
+                         "not discretisation error",
         .tier = full ? Tier::full : Tier::fast,
         .run = [full](const CheckContext& ctx) { return fe_non_monotonic(crack_sweep_cached(ctx, full)); }});
     Registry::instance().add(CheckSpec{
