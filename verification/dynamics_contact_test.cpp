@@ -4,6 +4,9 @@
 // interpolation between load levels, a heavily loaded pair whose contact is never
 // lost (no root fires, the result is the linear model's bit for bit), and the herringbone
 // pair whose mesh-in impact pulls its mesh force below zero unless contact may be lost.
+// Also the integrators under the march (solvers/dynamics/integrator.h): every method of the
+// work–precision study on an oscillator with a restart, the method keys, and the compiled
+// serial vector kernels against SUNDIALS' own.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +15,9 @@
 #include <numbers>
 
 #include "checks/dynamics_reference.h"
+#include "dynamics/integrator.h"
+#include "dynamics/serial_kernels.h"
+#include "model/errors.h"
 #include "dynamics/pair_friction.h"
 #include "efficiency/mesh_loss.h"
 #include "support/test_support.h"
@@ -144,6 +150,84 @@ TEST(DynamicsContactLoss, NoRootFiresUnderAHeavyLoadAndTheResultIsTheLinearOne) 
   EXPECT_EQ(lossy.transmission_error, linear.transmission_error);
   EXPECT_EQ(lossy.mesh_force, linear.mesh_force);
   EXPECT_EQ(lossy.steps, linear.steps);
+}
+
+
+// y'' = −ω²·y from y = 1 over two periods, restarted after the first (as the march does at a
+// break time): every method lands on cos(ω·t) within its tolerance, and the work done before
+// the restart is still counted after it (CVodeReInit zeroes the package's counters).
+TEST(DynamicsIntegrator, EveryMethodFollowsAnOscillatorAcrossARestart) {
+  const double omega = 2.0 * std::numbers::pi * 50.0, period = 0.02;
+  for (const auto& m : dynamics::integrator_methods()) {
+    dynamics::IntegratorOptions o;
+    o.method = m.method;
+    o.relative_tolerance = 1e-9;
+    o.absolute_tolerance = 1e-12;
+    const auto integrator = dynamics::make_integrator(2, [omega](double, const double* y, double* dy) {
+      dy[0] = y[1];
+      dy[1] = -omega * omega * y[0];
+    }, o);
+    integrator->reset(0.0, {1.0, 0.0});
+    const auto half = integrator->advance(period, period);
+    const long steps = integrator->steps();
+    integrator->reset(period, half);
+    const auto& y = integrator->advance(2.0 * period - 0.25 * period, 2.0 * period);
+    EXPECT_NEAR(y[0], std::cos(omega * 1.75 * period), 1e-6) << m.key;  // 1e-9 per step, ~1e3 steps
+    EXPECT_GT(integrator->steps(), steps) << m.key;
+    EXPECT_GT(integrator->rhs_evaluations(), integrator->steps()) << m.key;
+  }
+}
+
+TEST(DynamicsIntegrator, MethodKeysAreTheOfferedOnesAndABadKeyNamesTheAllowedOnes) {
+  EXPECT_EQ(dynamics::integrator_method("dormand_prince"), dynamics::IntegratorMethod::dormand_prince);
+  EXPECT_EQ(dynamics::integrator_method("adams"), dynamics::IntegratorMethod::adams);
+  for (const char* refused : {"rk45", "verner", "fehlberg"}) {
+    try {
+      (void)dynamics::integrator_method(refused);
+      FAIL() << refused;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("integrator.method"), std::string::npos);
+      EXPECT_NE(std::string(e.what()).find("dormand_prince"), std::string::npos);
+    }
+  }
+  dynamics::IntegratorOptions o;
+  o.relative_tolerance = 0.5;
+  EXPECT_THROW(o.validate(), InputError);
+}
+
+// The compiled kernels must be SUNDIALS' own operations, including a result that aliases
+// the first input (the packages update vectors in place that way).
+TEST(DynamicsIntegrator, SerialKernelsComputeWhatSundialsComputes) {
+  SUNContext context = nullptr;
+  ASSERT_EQ(SUNContext_Create(nullptr, &context), 0);
+  constexpr sunindextype n = 15;
+  N_Vector own = N_VNew_Serial(n, context), ours = N_VNew_Serial(n, context);
+  N_VEnableFusedOps_Serial(own, SUNTRUE);
+  N_VEnableFusedOps_Serial(ours, SUNTRUE);
+  dynamics::install_serial_kernels(ours);
+  auto run = [&](N_Vector base) {
+    std::vector<N_Vector> v{N_VClone(base), N_VClone(base), N_VClone(base)};
+    for (sunindextype i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < 3; ++j) NV_DATA_S(v[j])[i] = std::sin(1.0 + static_cast<double>(i) * (j + 1.5)) - 0.2;
+    realtype c[3] = {0.5, -2.0, 3.25};
+    N_VLinearCombination(3, c, v.data(), v[0]);  // in place
+    N_VLinearSum(1.5, v[0], -0.25, v[1], v[2]);
+    N_VAbs(v[2], v[1]);
+    N_VAddConst(v[1], 0.1, v[1]);
+    N_VInv(v[1], v[1]);
+    std::vector<double> out(NV_DATA_S(v[0]), NV_DATA_S(v[0]) + n);
+    out.insert(out.end(), NV_DATA_S(v[1]), NV_DATA_S(v[1]) + n);
+    out.push_back(N_VWrmsNorm(v[0], v[1]));
+    out.push_back(N_VMaxNorm(v[2]));
+    for (N_Vector x : v) N_VDestroy(x);
+    return out;
+  };
+  const auto a = run(own), b = run(ours);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_NEAR(a[i], b[i], 1e-14 * std::max(1.0, std::abs(a[i]))) << i;
+  N_VDestroy(own);
+  N_VDestroy(ours);
+  SUNContext_Free(&context);
 }
 
 }  // namespace

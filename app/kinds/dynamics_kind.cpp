@@ -20,11 +20,13 @@ namespace {
 using nlohmann::json;
 using model::Range;
 
-dynamics::CvodeOptions read_integrator(model::ObjectReader& root, dynamics::CvodeOptions o) {
+dynamics::IntegratorOptions read_integrator(model::ObjectReader& root, dynamics::IntegratorOptions o) {
   if (!root.has("integrator")) return o;
   auto i = root.object("integrator");
-  o.method = i.optional_string("method", {"adams", "bdf"}).value_or("adams") == "bdf" ? dynamics::CvodeMethod::bdf
-                                                                                       : dynamics::CvodeMethod::adams;
+  std::vector<std::string> keys;
+  for (const auto& m : dynamics::integrator_methods())
+    if (m.offered) keys.emplace_back(m.key);
+  if (const auto method = i.optional_string("method", keys)) o.method = dynamics::integrator_method(*method);
   o.relative_tolerance = i.optional_number("rtol", {1e-14, 1e-2}).value_or(o.relative_tolerance);
   o.absolute_tolerance = i.optional_number("atol", {1e-20, 1e-2}).value_or(o.absolute_tolerance);
   i.finish();

@@ -215,15 +215,16 @@ Herringbone12Dynamics::HalfState Herringbone12Dynamics::half_state(int h, double
   return s;
 }
 
-std::vector<double> Herringbone12Dynamics::contact_functions(const double* y) const {
-  if (!options_.backlash) return {};
+void Herringbone12Dynamics::contact_functions(const double* y, double* g) const {
   const double b = *options_.backlash, tau = p_.mesh_damping / p_.mean_mesh_stiffness;
-  std::vector<double> g;
   for (int h = 0; h < 2; ++h) {
     const double d = delta(h, y, 0), tau_rate = tau * delta(h, y, rate);
-    g.insert(g.end(), {d, d + b, d + tau_rate, d + b + tau_rate});
+    double* gh = g + 4 * h;
+    gh[0] = d;
+    gh[1] = d + b;
+    gh[2] = d + tau_rate;
+    gh[3] = d + b + tau_rate;
   }
-  return g;
 }
 
 // docs/dynamics-model.md, "Equations of motion" (seed 000 eqs 1–4).
@@ -313,7 +314,7 @@ std::vector<double> Herringbone12Dynamics::static_state() const {
     throw InputError("bearings: the static problem is singular (an axial coordinate is unrestrained: a floating "
                      "pinion needs a helical pair)");
   const Eigen::VectorXd qr = lu.solve(fr);
-  std::vector<double> y(state_size, 0.0);
+  std::vector<double> y(state_size(), 0.0);
   for (Eigen::Index a = 0; a < n; ++a) y[static_cast<std::size_t>(keep[static_cast<std::size_t>(a)])] = qr(a);
   return y;
 }
@@ -342,7 +343,6 @@ std::vector<double> Herringbone12Dynamics::natural_frequencies(std::vector<std::
   return f;
 }
 
-// Restarts: the halves' spur switches and the start and end of every impact pulse.
 std::vector<double> Herringbone12Dynamics::break_times(double t0, double t1) const {
   std::vector<double> times;
   for (int h = 0; h < 2; ++h) {
@@ -354,7 +354,6 @@ std::vector<double> Herringbone12Dynamics::break_times(double t0, double t1) con
       for (const double tau : {base, base + p_.impact_duration})
         if (tau - offset > t0 && tau - offset < t1) times.push_back(tau - offset);
   }
-  times.push_back(t1);
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end(),
                           [this](double a, double b) { return std::abs(a - b) < 1e-12 * p_.period; }),
@@ -365,90 +364,44 @@ std::vector<double> Herringbone12Dynamics::break_times(double t0, double t1) con
 Herringbone12Result Herringbone12Dynamics::solve() const {
   const auto start = std::chrono::steady_clock::now();
   const double T = p_.period;
-  const double t_record = options_.runup_cycles * T;
-  const double t_end = (options_.runup_cycles + options_.record_cycles) * T;
-  const double dt = T / options_.samples_per_cycle;
-  const auto samples = static_cast<std::size_t>(options_.record_cycles * options_.samples_per_cycle) + 1;
-  double t_mid = 0.0;
-  CvodeIntegrator integrator(state_size, [&](double t, const double* y, double* dydt) { derivative(t, t_mid, y, dydt); },
-                             options_.integrator);
-  if (options_.backlash)
-    integrator.set_roots(8, [this](double, const double* y, double* g) {
-      const auto values = contact_functions(y);
-      std::copy(values.begin(), values.end(), g);
-    });
+  MarchPlan plan;
+  plan.t_record = options_.runup_cycles * T;
+  plan.t_end = (options_.runup_cycles + options_.record_cycles) * T;
+  plan.sample_interval = T / options_.samples_per_cycle;
+  plan.samples = static_cast<std::size_t>(options_.record_cycles * options_.samples_per_cycle) + 1;
+  plan.longest_call = T;
   Herringbone12Result r;
   r.static_mesh_force = p_.static_force;
   r.mesh_frequency = 1.0 / T;
   r.load_torque = 2.0 * p_.T_g;
-  std::vector<double> y = static_state(), y_record;
-  double a = 0.0, e_record = 0.0;
-  std::size_t next = 0;
-  auto record_sample = [&](double t, const std::vector<double>& state) {
-    r.time.push_back(t - t_record);
+  const auto m = march(*this, options_.integrator, plan, static_state(), [&](double t, double t_mid, const std::vector<double>& y) {
+    r.time.push_back(t - plan.t_record);
     for (int h = 0; h < 2; ++h) {
-      const HalfState s = half_state(h, t, t_mid, state.data());
+      const HalfState s = half_state(h, t, t_mid, y.data());
       r.transmission_error[static_cast<std::size_t>(h)].push_back(s.delta);
       r.mesh_force[static_cast<std::size_t>(h)].push_back(s.force);
       r.friction_torque[static_cast<std::size_t>(h)].push_back(s.force * s.mesh.chi_pinion);
       if (s.force == 0.0) r.contact_loss_fraction += 0.5;
       if (s.back) r.back_contact_fraction += 0.5;
     }
-    r.axial_float.push_back(0.5 * (state[index(0, ZP)] + state[index(1, ZP)]));
-    r.bearing_force_pinion.push_back(p_.k_radial * state[index(0, YP)] + p_.c_radial * state[rate + index(0, YP)]);
-    if (next == 0) {
-      y_record = state;
-      e_record = energy(t, t_mid, state.data());
-    }
-  };
-  const double tiny = 1e-9 * dt;
-  double jumps = 0.0;  // ½Σ Δk·δ² where spur pairs enter and leave inside the window
-  const std::vector<double> breaks = break_times(0.0, t_end);
-  for (std::size_t i = 0; i < breaks.size(); ++i) {
-    const double b = breaks[i];
-    t_mid = 0.5 * (a + b);
-    integrator.reset(a, y);
-    double reached = a;
-    // To `target`, restarting where a contact function has a root (the force kinks or jumps).
-    auto advance_once = [&](double target) {
-      CvodeIntegrator::RootCrossing work;
-      y = integrator.advance_across_roots(target, b, tiny, work);
-      r.contact_events += work.events;
-      r.steps += work.steps;
-      r.rhs_evaluations += work.rhs_evaluations;
-    };
-    // Long stretches go in whole mesh cycles (CVODE's step limit is per call).
-    auto advance_to = [&](double target) {
-      while (target > reached + T) advance_once(reached += T);
-      advance_once(target);
-      reached = target;
-    };
-    while (next < samples) {
-      const double ts = t_record + static_cast<double>(next) * dt;
-      if (ts > b + tiny) break;
-      if (ts > reached + tiny) advance_to(std::min(ts, b));
-      if (ts >= a - tiny) record_sample(ts, y);
-      ++next;
-    }
-    if (b > reached + tiny) advance_to(b);
-    if (i + 1 < breaks.size() && b > t_record - tiny)
-      jumps += energy(b, 0.5 * (b + breaks[i + 1]), y.data()) - energy(b, t_mid, y.data());
-    r.steps += integrator.steps();
-    r.rhs_evaluations += integrator.rhs_evaluations();
-    a = b;
-  }
+    r.axial_float.push_back(0.5 * (y[index(0, ZP)] + y[index(1, ZP)]));
+    r.bearing_force_pinion.push_back(p_.k_radial * y[index(0, YP)] + p_.c_radial * y[rate + index(0, YP)]);
+  });
+  r.steps = m.steps;
+  r.rhs_evaluations = m.rhs_evaluations;
+  r.contact_events = m.contact_events;
   // Energy balance of the recorded window (docs, "Energy balance").
   auto& e = r.energy;
-  const double window = t_end - t_record;
+  const double window = plan.t_end - plan.t_record;
   for (int h = 0; h < 2; ++h) {
-    e.input += p_.T_p * (p_.omega_p * window + y[index(h, TP)] - y_record[index(h, TP)]);
-    e.output += p_.T_g * (p_.omega_g * window + y[index(h, TG)] - y_record[index(h, TG)]);
+    e.input += p_.T_p * (p_.omega_p * window + m.y_end[index(h, TP)] - m.y_record[index(h, TP)]);
+    e.output += p_.T_g * (p_.omega_g * window + m.y_end[index(h, TG)] - m.y_record[index(h, TG)]);
   }
-  e.damping = y[work + 0] - y_record[work + 0];
-  e.friction = y[work + 1] - y_record[work + 1];
-  e.parametric = y[work + 2] - y_record[work + 2] + jumps;
-  e.impact = y[work + 3] - y_record[work + 3];
-  e.energy_change = energy(t_end, t_mid, y.data()) - e_record;
+  e.damping = m.y_end[work + 0] - m.y_record[work + 0];
+  e.friction = m.y_end[work + 1] - m.y_record[work + 1];
+  e.parametric = m.y_end[work + 2] - m.y_record[work + 2] + m.jumps;
+  e.impact = m.y_end[work + 3] - m.y_record[work + 3];
+  e.energy_change = m.energy_end - m.energy_record;
   e.residual = (e.energy_change - (e.input - e.output - e.damping - e.friction + e.parametric + e.impact)) /
                (e.damping + e.friction);
 
@@ -463,12 +416,9 @@ Herringbone12Result Herringbone12Dynamics::solve() const {
   r.back_contact_fraction /= static_cast<double>(r.time.size());
   // The spectrum and periodicity over whole cycles: the closing sample repeats the first phase.
   std::vector<double> te(r.transmission_error[0].begin(), r.transmission_error[0].end() - 1);
-  amplitude_spectrum(te, dt, r.spectrum_frequency, r.spectrum_te);
+  amplitude_spectrum(te, plan.sample_interval, r.spectrum_frequency, r.spectrum_te);
   r.natural_frequencies = natural_frequencies(&r.mode_shapes);
-  const auto period = static_cast<std::size_t>(options_.samples_per_cycle);
-  double drift = 0.0;
-  for (std::size_t i = te.size() - period; i < te.size(); ++i) drift = std::max(drift, std::abs(te[i] - te[i - period]));
-  r.periodicity = drift / std::max(r.te[0].peak_to_peak, 1e-300);
+  r.periodicity = periodicity(te, static_cast<std::size_t>(options_.samples_per_cycle));
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // 12-DOF bending–torsion–axial dynamics of a herringbone pair on rolling bearings
 // (production solver #4, second model): seed 000 eqs 1–7 as written out in
-// docs/dynamics-model.md ("12-DOF herringbone model"), integrated by SUNDIALS CVODE.
+// docs/dynamics-model.md ("12-DOF herringbone model"), marched by march.h (SUNDIALS).
 //
 // Pipeline: herringbone geometry → per-half mesh excitation (slicing of the energy-method
 // stiffness, friction arms) → quasi-static load and state → run-up → recorded window at a
@@ -11,7 +11,8 @@
 #include <optional>
 #include <vector>
 
-#include "cvode_integrator.h"
+#include "integrator.h"
+#include "march.h"
 #include "geometry/gear_pair_geometry.h"
 #include "half_mesh.h"
 #include "model/materials.h"
@@ -38,7 +39,7 @@ struct Herringbone12Options {
   int runup_cycles = 100;
   int record_cycles = 20;
   int samples_per_cycle = 64;
-  CvodeOptions integrator;
+  IntegratorOptions integrator;
 
   void validate() const;  ///< InputError naming the key
 };
@@ -84,7 +85,7 @@ struct Herringbone12Result {
   double seconds = 0.0;
 };
 
-class Herringbone12Dynamics {
+class Herringbone12Dynamics final : public DynamicsModel {
  public:
   /// `geometry` (a herringbone pair, or a spur pair for the reduction to two spur models)
   /// must outlive the solver.
@@ -95,9 +96,12 @@ class Herringbone12Dynamics {
   [[nodiscard]] const Herringbone12Parameters& parameters() const { return p_; }
   [[nodiscard]] const HalfMesh& mesh() const { return mesh_; }
   /// Size of the state: 12 coordinates, 12 rates, 4 work accumulators.
-  static constexpr std::size_t state_size = 28;
+  [[nodiscard]] std::size_t state_size() const override { return 28; }
   /// dy/dt of the page's equations (pair sets and impact pulses of the interval holding t_mid).
-  void derivative(double t, double t_mid, const double* y, double* dydt) const;
+  void derivative(double t, double t_mid, const double* y, double* dydt) const override;
+  [[nodiscard]] double energy(double t, double t_mid, const double* y) const override;
+  /// Restarts: the halves' spur switches and the start and end of every impact pulse.
+  [[nodiscard]] std::vector<double> break_times(double t0, double t1) const override;
   /// The quasi-static state under the mean stiffness, arms and impact pulse (rates and work zero; the
   /// left wheel half at θ = 0).
   [[nodiscard]] std::vector<double> static_state() const;
@@ -105,8 +109,9 @@ class Herringbone12Dynamics {
   /// The eq. 6 pulse of half h at time t (the interval holding t_mid decides if it acts).
   [[nodiscard]] double impact_force(int half, double t, double t_mid) const;
   /// The contact functions of docs/dynamics-model.md, "Contact loss", for both halves:
-  /// δ_h, δ_h + b, δ_h + τδ̇_h, δ_h + b + τδ̇_h (τ = c_m/k̄); empty without backlash.
-  [[nodiscard]] std::vector<double> contact_functions(const double* y) const;
+  /// δ_h, δ_h + b, δ_h + τδ̇_h, δ_h + b + τδ̇_h (τ = c_m/k̄); none without backlash.
+  [[nodiscard]] int contact_function_count() const override { return options_.backlash ? 8 : 0; }
+  void contact_functions(const double* y, double* g) const override;
 
  private:
   struct HalfState {
@@ -118,8 +123,6 @@ class Herringbone12Dynamics {
   };
   [[nodiscard]] HalfState half_state(int half, double t, double t_mid, const double* y) const;
   [[nodiscard]] double delta(int half, const double* y, int first) const;  ///< δ_h (first 0) or δ̇_h (first 12)
-  [[nodiscard]] double energy(double t, double t_mid, const double* y) const;
-  [[nodiscard]] std::vector<double> break_times(double t0, double t1) const;
 
   Herringbone12Options options_;
   HalfMesh mesh_;

@@ -17,6 +17,16 @@ namespace gearbench::dynamics {
 namespace {
 constexpr double pi = std::numbers::pi;
 constexpr int spline_nodes = 1025;
+// The state: q = [x1, y1, θ1, x2, y2, θ2] (docs/dynamics-model.md), their rates at rate + i,
+// then the work accumulators of the energy balance.
+enum Coordinate : int { X1 = 0, Y1 = 1, TH1 = 2, X2 = 3, Y2 = 4, TH2 = 5 };
+constexpr int rate = 6;
+enum Work : int { DAMPING = 12, FRICTION = 13, PARAMETRIC = 14 };
+
+/// δ = x1 + R_b1·θ1 − x2 − R_b2·θ2 (first = 0) or its rate (first = rate).
+double line_of_action(const Spur6Parameters& p, const double* y, int first) {
+  return y[first + X1] + p.rb1 * y[first + TH1] - y[first + X2] - p.rb2 * y[first + TH2];
+}
 }  // namespace
 
 void Spur6Options::validate() const {
@@ -135,8 +145,8 @@ double Spur6Dynamics::pair_stiffness(double s, bool cracked_tooth, bool crack_ac
 Spur6Dynamics::MeshState Spur6Dynamics::mesh(double t, double t_mid, const double* y) const {
   const double u = p_.contact_speed;
   const double n = std::floor(u * t_mid / p_.pbt);
-  const double delta = y[0] + p_.rb1 * y[2] - y[3] - p_.rb2 * y[5];
-  const double delta_rate = y[6] + p_.rb1 * y[8] - y[9] - p_.rb2 * y[11];
+  const double delta = line_of_action(p_, y, 0);
+  const double delta_rate = line_of_action(p_, y, rate);
   MeshState m;
   m.delta = delta;
   m.delta_rate = delta_rate;
@@ -188,54 +198,57 @@ Spur6Dynamics::MeshState Spur6Dynamics::mesh(double t, double t_mid, const doubl
 // docs/dynamics-model.md, "Equations of motion" (seed 003 eq. 12).
 void Spur6Dynamics::derivative(double t, double t_mid, const double* y, double* dydt) const {
   const MeshState m = mesh(t, t_mid, y);
-  for (int i = 0; i < 6; ++i) dydt[i] = y[6 + i];
-  dydt[6] = (-m.force - p_.c_bearing * y[6] - p_.k_bearing * y[0]) / p_.m1;
-  dydt[7] = (-m.friction - p_.c_bearing * y[7] - p_.k_bearing * y[1]) / p_.m1;
-  dydt[8] = (p_.T1 - p_.rb1 * m.force - m.moment1) / p_.I1;
-  dydt[9] = (m.force - p_.c_bearing * y[9] - p_.k_bearing * y[3]) / p_.m2;
-  dydt[10] = (m.friction - p_.c_bearing * y[10] - p_.k_bearing * y[4]) / p_.m2;
-  dydt[11] = (p_.rb2 * m.force + m.moment2 - p_.T2) / p_.I2;
+  const double* v = y + rate;
+  for (int i = 0; i < 6; ++i) dydt[i] = v[i];
+  double* a = dydt + rate;
+  a[X1] = (-m.force - p_.c_bearing * v[X1] - p_.k_bearing * y[X1]) / p_.m1;
+  a[Y1] = (-m.friction - p_.c_bearing * v[Y1] - p_.k_bearing * y[Y1]) / p_.m1;
+  a[TH1] = (p_.T1 - p_.rb1 * m.force - m.moment1) / p_.I1;
+  a[X2] = (m.force - p_.c_bearing * v[X2] - p_.k_bearing * y[X2]) / p_.m2;
+  a[Y2] = (m.friction - p_.c_bearing * v[Y2] - p_.k_bearing * y[Y2]) / p_.m2;
+  a[TH2] = (p_.rb2 * m.force + m.moment2 - p_.T2) / p_.I2;
   // The works of the energy balance (docs/dynamics-model.md, "Energy balance").
   const double w1 = p_.contact_speed / p_.rb1, w2 = w1 * p_.rb1 / p_.rb2;
   double bearings = 0.0;
-  for (const int i : {6, 7, 9, 10}) bearings += p_.c_bearing * y[i] * y[i];
-  dydt[12] = bearings + m.mesh_dissipation;
-  dydt[13] = m.moment1 * (w1 + y[8]) - m.moment2 * (w2 + y[11]) - m.friction * (y[10] - y[7]);
-  dydt[14] = 0.5 * m.stiffness_rate * m.penetration * m.penetration;
+  for (const int i : {X1, Y1, X2, Y2}) bearings += p_.c_bearing * v[i] * v[i];
+  dydt[DAMPING] = bearings + m.mesh_dissipation;
+  dydt[FRICTION] = m.moment1 * (w1 + v[TH1]) - m.moment2 * (w2 + v[TH2]) - m.friction * (v[Y2] - v[Y1]);
+  dydt[PARAMETRIC] = 0.5 * m.stiffness_rate * m.penetration * m.penetration;
 }
 
 // E = ½Σm·q̇² + ½Σ I·(Ω + θ̇)² + ½k_b·Σq² + ½Σk_j·p² (p = δ without contact loss).
 double Spur6Dynamics::energy(double t, double t_mid, const double* y) const {
   const double w1 = p_.contact_speed / p_.rb1, w2 = w1 * p_.rb1 / p_.rb2;
   const MeshState m = mesh(t, t_mid, y);
-  double e = p_.m1 * (y[6] * y[6] + y[7] * y[7]) + p_.m2 * (y[9] * y[9] + y[10] * y[10]);
-  e += p_.I1 * (w1 + y[8]) * (w1 + y[8]) + p_.I2 * (w2 + y[11]) * (w2 + y[11]);
-  for (const int i : {0, 1, 3, 4}) e += p_.k_bearing * y[i] * y[i];
+  const double* v = y + rate;
+  double e = p_.m1 * (v[X1] * v[X1] + v[Y1] * v[Y1]) + p_.m2 * (v[X2] * v[X2] + v[Y2] * v[Y2]);
+  e += p_.I1 * (w1 + v[TH1]) * (w1 + v[TH1]) + p_.I2 * (w2 + v[TH2]) * (w2 + v[TH2]);
+  for (const int i : {X1, Y1, X2, Y2}) e += p_.k_bearing * y[i] * y[i];
   return 0.5 * (e + m.stiffness * m.penetration * m.penetration);
 }
 
-std::vector<double> Spur6Dynamics::contact_functions(const double* y) const {
-  if (!options_.backlash) return {};
-  const double delta = y[0] + p_.rb1 * y[2] - y[3] - p_.rb2 * y[5];
-  const double rate = y[6] + p_.rb1 * y[8] - y[9] - p_.rb2 * y[11];
-  const double tau = p_.mesh_damping / p_.mean_mesh_stiffness;
-  return {delta, delta + p_.backlash, delta + tau * rate, delta + p_.backlash + tau * rate};
+void Spur6Dynamics::contact_functions(const double* y, double* g) const {
+  const double delta = line_of_action(p_, y, 0), tau_rate = p_.mesh_damping / p_.mean_mesh_stiffness * line_of_action(p_, y, rate);
+  g[0] = delta;
+  g[1] = delta + p_.backlash;
+  g[2] = delta + tau_rate;
+  g[3] = delta + p_.backlash + tau_rate;
 }
 
 std::vector<double> Spur6Dynamics::static_state() const {
   const double F0 = p_.static_force;
   const double delta0 = F0 / p_.mean_mesh_stiffness;
-  std::vector<double> y(state_size, 0.0);
-  y[0] = -F0 / p_.k_bearing;
-  y[3] = F0 / p_.k_bearing;
-  y[2] = (delta0 - y[0] + y[3]) / p_.rb1;
+  std::vector<double> y(state_size(), 0.0);
+  y[X1] = -F0 / p_.k_bearing;
+  y[X2] = F0 / p_.k_bearing;
+  y[TH1] = (delta0 - y[X1] + y[X2]) / p_.rb1;
   return y;
 }
 
 // Where the right-hand side jumps, once per mesh period each: a pair enters (u·t ≡ 0), the
 // leading pair leaves (u·t ≡ E − A − p_bt), a pair passes the pitch point, reversing its
 // friction (u·t ≡ C − A, mod p_bt), and, with a pitch crack, passes the crack's mouth.
-std::vector<double> Spur6Dynamics::switch_times(double t0, double t1) const {
+std::vector<double> Spur6Dynamics::break_times(double t0, double t1) const {
   const double period = p_.pbt / p_.contact_speed;
   const double exit_offset = (p_.E - p_.A - p_.pbt) / p_.contact_speed;
   const double pitch_offset = std::fmod(p_.C - p_.A, p_.pbt) / p_.contact_speed;
@@ -276,84 +289,38 @@ Spur6Result Spur6Dynamics::solve() const {
   const int period_cycles = cracked ? p_.z1 : 1;
   const int runup = (options_.runup_cycles + period_cycles - 1) / period_cycles * period_cycles;
   const int record = (std::max(options_.record_cycles, 2 * period_cycles) + period_cycles - 1) / period_cycles * period_cycles;
-  const double t_record = runup * T_mesh;
-  const double t_end = (runup + record) * T_mesh;
-  const double dt = T_mesh / options_.samples_per_cycle;
-  const auto samples = static_cast<std::size_t>(record) * static_cast<std::size_t>(options_.samples_per_cycle);
+  MarchPlan plan;
+  plan.t_record = runup * T_mesh;
+  plan.t_end = (runup + record) * T_mesh;
+  plan.sample_interval = T_mesh / options_.samples_per_cycle;
+  plan.samples = static_cast<std::size_t>(record) * static_cast<std::size_t>(options_.samples_per_cycle);
+  plan.longest_call = T_mesh;
 
-  double t_mid = 0.0;
-  CvodeIntegrator integrator(state_size, [&](double t, const double* y, double* dydt) { derivative(t, t_mid, y, dydt); },
-                             options_.integrator);
-  if (options_.backlash)
-    integrator.set_roots(4, [this](double, const double* y, double* g) {
-      const auto values = contact_functions(y);
-      std::copy(values.begin(), values.end(), g);
-    });
   Spur6Result r;
   r.static_mesh_force = p_.static_force;
   r.mesh_frequency = 1.0 / T_mesh;
-  std::vector<double> y = static_state();
-  std::vector<double> breaks = switch_times(0.0, t_end);
-  breaks.push_back(t_end);
-  double a = 0.0;
-  std::size_t next_sample = 0;
-  std::vector<double> y_record;
-  double e_record = 0.0;
-  auto record_sample = [&](double t, const std::vector<double>& state) {
-    if (next_sample == 0) {
-      y_record = state;
-      e_record = energy(t, t_mid, state.data());
-    }
-    const MeshState m = mesh(t, t_mid, state.data());
-    r.time.push_back(t - t_record);
-    r.transmission_error.push_back(m.delta);
-    r.mesh_force.push_back(m.force);
-    r.friction_force.push_back(m.friction);
-    r.bearing_force_x1.push_back(p_.k_bearing * state[0] + p_.c_bearing * state[6]);
-    if (m.force == 0.0) r.contact_loss_fraction += 1.0;
-    if (m.back) r.back_contact_fraction += 1.0;
-  };
-  double jumps = 0.0;  // ½Σ Δk_j·δ² where pairs enter and leave inside the window
-  for (std::size_t i = 0; i < breaks.size(); ++i) {
-    const double b = breaks[i];
-    t_mid = 0.5 * (a + b);
-    integrator.reset(a, y);
-    // Sample times that coincide with a switch time up to rounding are taken at the switch:
-    // CVODE refuses an output time within its own rounding of the current time.
-    const double tiny = 1e-9 * dt;
-    double reached = a;
-    // To `target`, restarting where a contact function has a root (the force kinks or jumps).
-    auto advance_to = [&](double target) {
-      CvodeIntegrator::RootCrossing work;
-      y = integrator.advance_across_roots(target, b, tiny, work);
-      r.contact_events += work.events;
-      r.steps += work.steps;
-      r.rhs_evaluations += work.rhs_evaluations;
-      reached = target;
-    };
-    while (next_sample < samples) {
-      const double ts = t_record + static_cast<double>(next_sample) * dt;
-      if (ts > b + tiny) break;
-      if (ts > reached + tiny) advance_to(std::min(ts, b));
-      if (ts >= a - tiny) record_sample(ts, y);
-      ++next_sample;
-    }
-    if (b > reached + tiny) advance_to(b);
-    if (i + 1 < breaks.size() && b > t_record - tiny)
-      jumps += energy(b, 0.5 * (b + breaks[i + 1]), y.data()) - energy(b, t_mid, y.data());
-    r.steps += integrator.steps();
-    r.rhs_evaluations += integrator.rhs_evaluations();
-    a = b;
-  }
+  const auto m = march(*this, options_.integrator, plan, static_state(), [&](double t, double t_mid, const std::vector<double>& y) {
+    const MeshState mesh_state = mesh(t, t_mid, y.data());
+    r.time.push_back(t - plan.t_record);
+    r.transmission_error.push_back(mesh_state.delta);
+    r.mesh_force.push_back(mesh_state.force);
+    r.friction_force.push_back(mesh_state.friction);
+    r.bearing_force_x1.push_back(p_.k_bearing * y[X1] + p_.c_bearing * y[rate + X1]);
+    if (mesh_state.force == 0.0) r.contact_loss_fraction += 1.0;
+    if (mesh_state.back) r.back_contact_fraction += 1.0;
+  });
+  r.steps = m.steps;
+  r.rhs_evaluations = m.rhs_evaluations;
+  r.contact_events = m.contact_events;
 
   auto& e = r.energy;
-  const double w1 = p_.contact_speed / p_.rb1, w2 = w1 * p_.rb1 / p_.rb2, window = t_end - t_record;
-  e.input = p_.T1 * (w1 * window + y[2] - y_record[2]);
-  e.output = p_.T2 * (w2 * window + y[5] - y_record[5]);
-  e.damping = y[12] - y_record[12];
-  e.friction = y[13] - y_record[13];
-  e.parametric = y[14] - y_record[14] + jumps;
-  e.energy_change = energy(t_end, t_mid, y.data()) - e_record;
+  const double w1 = p_.contact_speed / p_.rb1, w2 = w1 * p_.rb1 / p_.rb2, window = plan.t_end - plan.t_record;
+  e.input = p_.T1 * (w1 * window + m.y_end[TH1] - m.y_record[TH1]);
+  e.output = p_.T2 * (w2 * window + m.y_end[TH2] - m.y_record[TH2]);
+  e.damping = m.y_end[DAMPING] - m.y_record[DAMPING];
+  e.friction = m.y_end[FRICTION] - m.y_record[FRICTION];
+  e.parametric = m.y_end[PARAMETRIC] - m.y_record[PARAMETRIC] + m.jumps;
+  e.energy_change = m.energy_end - m.energy_record;
   e.residual = (e.energy_change - (e.input - e.output - e.damping - e.friction + e.parametric)) /
                (e.damping + e.friction);
   r.te = statistics(r.transmission_error);
@@ -362,13 +329,9 @@ Spur6Result Spur6Dynamics::solve() const {
   r.contact_loss_fraction /= static_cast<double>(r.time.size());
   r.back_contact_fraction /= static_cast<double>(r.time.size());
   r.dynamic_factor = *std::max_element(r.mesh_force.begin(), r.mesh_force.end()) / r.static_mesh_force;
-  amplitude_spectrum(r.transmission_error, dt, r.spectrum_frequency, r.spectrum_te);
+  amplitude_spectrum(r.transmission_error, plan.sample_interval, r.spectrum_frequency, r.spectrum_te);
   r.natural_frequencies = natural_frequencies();
-  const std::size_t period = static_cast<std::size_t>(period_cycles * options_.samples_per_cycle);
-  double drift = 0.0;
-  for (std::size_t i = r.transmission_error.size() - period; i < r.transmission_error.size(); ++i)
-    drift = std::max(drift, std::abs(r.transmission_error[i] - r.transmission_error[i - period]));
-  r.periodicity = drift / std::max(r.te.peak_to_peak, 1e-300);
+  r.periodicity = periodicity(r.transmission_error, static_cast<std::size_t>(period_cycles * options_.samples_per_cycle));
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

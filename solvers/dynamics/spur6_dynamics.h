@@ -1,8 +1,8 @@
 #pragma once
 // 6-DOF dynamics of a spur pair on bearings (production solver #4, first model): the
 // equations of docs/dynamics-model.md (seed 003 eqs 12–15) with the energy-method
-// single-pair stiffness, healthy or with a cracked pinion tooth, integrated by SUNDIALS
-// CVODE with a stop and restart at every stiffness switch.
+// single-pair stiffness, healthy or with a cracked pinion tooth, marched by march.h (SUNDIALS,
+// restarting at every stiffness switch).
 //
 // Pipeline: parameters from the case → single-pair stiffness (healthy: spline) → static
 // state → run-up over whole revolutions/mesh cycles → recorded window at a fixed sample
@@ -12,7 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "cvode_integrator.h"
+#include "integrator.h"
+#include "march.h"
 #include "pair_friction.h"
 #include "response_analysis.h"
 #include "geometry/gear_pair_geometry.h"
@@ -34,7 +35,7 @@ struct Spur6Options {
   int runup_cycles = 60;             ///< mesh cycles before recording (whole revolutions with a crack)
   int record_cycles = 40;            ///< mesh cycles recorded (at least two revolutions with a crack)
   int samples_per_cycle = 64;
-  CvodeOptions integrator;
+  IntegratorOptions integrator;
 
   void validate() const;             ///< InputError naming the key
 };
@@ -76,7 +77,7 @@ struct Spur6Result {
   double seconds = 0.0;
 };
 
-class Spur6Dynamics {
+class Spur6Dynamics final : public DynamicsModel {
  public:
   Spur6Dynamics(const geometry::GearPairGeometry& geometry, const std::array<model::Material, 2>& materials,
                 const model::OperatingPoint& operating, Spur6Options options);
@@ -87,12 +88,16 @@ class Spur6Dynamics {
   /// pair with its crack acting or not (decided for a whole interval by its midpoint).
   [[nodiscard]] double pair_stiffness(double s, bool cracked_tooth = false, bool crack_acting = false) const;
   /// Size of the state: 6 coordinates, 6 rates, 3 work accumulators (damping, friction, stiffness).
-  static constexpr std::size_t state_size = 15;
+  [[nodiscard]] std::size_t state_size() const override { return 15; }
   /// The contact functions of docs/dynamics-model.md, "Contact loss": δ, δ + b, δ + τδ̇,
-  /// δ + b + τδ̇ (τ = c_m/k̄); empty without backlash.
-  [[nodiscard]] std::vector<double> contact_functions(const double* y) const;
+  /// δ + b + τδ̇ (τ = c_m/k̄); none without backlash.
+  [[nodiscard]] int contact_function_count() const override { return options_.backlash ? 4 : 0; }
+  void contact_functions(const double* y, double* g) const override;
   /// dy/dt of the page's equations for the pair set of the interval holding t_mid.
-  void derivative(double t, double t_mid, const double* y, double* dydt) const;
+  void derivative(double t, double t_mid, const double* y, double* dydt) const override;
+  [[nodiscard]] double energy(double t, double t_mid, const double* y) const override;
+  /// Where the right-hand side jumps: pairs enter, leave, pass the pitch point (or a crack's mouth).
+  [[nodiscard]] std::vector<double> break_times(double t0, double t1) const override;
   /// The static state of docs/dynamics-model.md.
   [[nodiscard]] std::vector<double> static_state() const;
   /// Natural frequencies [Hz] of the linear system on the mean mesh stiffness without
@@ -108,8 +113,6 @@ class Spur6Dynamics {
     bool back = false;             ///< on the back flanks
   };
   [[nodiscard]] MeshState mesh(double t, double t_mid, const double* y) const;
-  [[nodiscard]] std::vector<double> switch_times(double t0, double t1) const;
-  [[nodiscard]] double energy(double t, double t_mid, const double* y) const;
 
   const geometry::GearPairGeometry& geometry_;
   Spur6Options options_;
