@@ -1,5 +1,5 @@
 // Case kind "dynamics": 6-DOF spur-pair (model "spur6") and 12-DOF herringbone (model
-// "herringbone12") dynamics on SUNDIALS CVODE, optionally swept over speed.
+// "herringbone12") dynamics on SUNDIALS (CVODE or ARKODE, `integrator.method`), optionally swept over speed.
 #include <cmath>
 #include <fmt/format.h>
 #include <iostream>
@@ -329,7 +329,7 @@ json run_dynamics(const json& case_json) {
 }
 
 const RegisterKind dynamics_kind(
-    {"dynamics", "6-DOF spur-pair and 12-DOF herringbone dynamics on SUNDIALS CVODE", run_dynamics});
+    {"dynamics", "6-DOF spur-pair and 12-DOF herringbone dynamics on SUNDIALS CVODE/ARKODE", run_dynamics});
 
 }  // namespace
 }  // namespace gearbench::app
