@@ -8,9 +8,10 @@
 //      r_i = { [ε_f·∂P − H_f]_{i+½} − [ε_f·∂P − H_f]_{i−½} } / w_i,   w_i = (X_{i+1} − X_{i−1})/2,
 //    Poiseuille flux central (ε_f the mean of its two nodes, ∂P the difference quotient), Couette
 //    flux with the face film reconstructed linearly from the two upstream nodes (second-order
-//    "linear upwind", Patankar, Numerical Heat Transfer and Fluid Flow, 1980, §5.2 family; the
-//    first face uses the mean). A central face film leaves an odd–even pressure mode undamped
-//    in the Hertz zone where ε → 0 (only H_{i+1} = H_{i−1} is enforced there);
+//    upwind; on a uniform grid its difference is Venner & Lubrecht's second-order wedge
+//    (1.5H_i − 2H_{i−1} + 0.5H_{i−2})/h, REFERENCE-FACTS "Turn 2"; here in flux form on the
+//    stretched grid; the first face uses the mean). A central face film leaves an odd–even
+//    pressure mode undamped in the Hertz zone where ε → 0 (only H_{i+1} = H_{i−1} is enforced);
 //  * cavitation (Reynolds outlet): the complementarity P ≥ 0, −r ≥ 0, P·r = 0 written with the
 //    Fischer–Burmeister function, φ(P_i, −r_i/σ_i) = 0, and solved by semismooth Newton
 //    (De Luca, Facchinei & Kanzow 1996; see fischer_burmeister below);
