@@ -27,7 +27,7 @@ struct EhlNewtonOptions {
   double x_core = std::numeric_limits<double>::quiet_NaN();
   double x_out = std::numeric_limits<double>::quiet_NaN();
   double core_fraction = 0.7;  ///< share of the nodes on the uniform core [x_core, x_out]
-  int max_iterations = 60;     ///< Newton iterations per solve
+  int max_iterations = 100;    ///< Newton iterations per solve (65 needed at M = 10, L = 17.5, 1025 nodes)
   double tolerance = 1e-9;     ///< on max |complementarity residual| and |force balance|
 };
 
