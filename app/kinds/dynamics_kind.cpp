@@ -36,7 +36,7 @@ std::optional<bool> optional_bool(model::ObjectReader& reader, const json& objec
   if (!reader.has(key)) return std::nullopt;
   reader.accept(key);
   if (!object.at(key).is_boolean())
-    throw InputError(fmt::format("{} = {}: must be true or false", reader.key_path(key), object.at(key).dump()));
+    throw InputError(fmt::format("{} = {}: must be true or false", reader.key_path(key), model::shown_value(object.at(key))));
   return object.at(key).get<bool>();
 }
 
