@@ -172,8 +172,9 @@ TEST(ObjectReader, ShiftSumWithoutWorkingPressureAngle) {
 }
 
 TEST(ReadTextFile, DirectoryAndSizeCap) {
-  EXPECT_EQ(input_error_of([] { read_text_file("/tmp"); }), "/tmp: is a directory, not a file");
-  EXPECT_EQ(input_error_of([] { read_text_file("/dev/zero"); }), "/dev/zero: larger than 64 MiB, the most gearbench reads");
+  EXPECT_EQ(input_error_of([] { read_text_file("/tmp"); }), "/tmp: is a directory, not a case file");
+  EXPECT_EQ(input_error_of([] { read_text_file("/dev/zero", "sweep file"); }),
+            "/dev/zero: larger than 64 MiB, the most gearbench reads in a sweep file");
 }
 
 TEST(EditDistance, Basics) {

@@ -130,22 +130,22 @@ nlohmann::ordered_json parse_ordered_json(const std::string& text, const std::st
   return parse_tracked<nlohmann::ordered_json>(text, source_name);
 }
 
-std::string read_text_file(const std::string& path) {
+std::string read_text_file(const std::string& path, const std::string& what) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
-    throw InputError(fmt::format("{}: is a directory, not a file", shown_text(path)));
+    throw InputError(fmt::format("{}: is a directory, not a {}", shown_text(path), what));
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot open the case file", shown_text(path)));
+  if (!in) throw InputError(fmt::format("{}: cannot open the {}", shown_text(path), what));
   // Read in chunks up to the cap: /dev/zero or a runaway file must not fill the memory.
   std::string text;
   std::array<char, 1 << 16> chunk{};
   while (in.read(chunk.data(), chunk.size()) || in.gcount() > 0) {
     text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
     if (text.size() > max_file_bytes)
-      throw InputError(fmt::format("{}: larger than {} MiB, the most gearbench reads", shown_text(path),
-                                   max_file_bytes >> 20));
+      throw InputError(fmt::format("{}: larger than {} MiB, the most gearbench reads in a {}",
+                                   shown_text(path), max_file_bytes >> 20, what));
   }
-  if (in.bad()) throw InputError(fmt::format("{}: cannot read the file", shown_text(path)));
+  if (in.bad()) throw InputError(fmt::format("{}: cannot read the {}", shown_text(path), what));
   return text;
 }
 

@@ -40,8 +40,8 @@ nlohmann::json parse_json(const std::string& text, const std::string& source_nam
 nlohmann::ordered_json parse_ordered_json(const std::string& text, const std::string& source_name);
 
 /// The content of a regular file (or a device/pipe) of at most max_file_bytes; InputError
-/// if it is missing, a directory or too large.
-std::string read_text_file(const std::string& path);
+/// if it is missing, a directory or too large. `what` names the file in messages.
+std::string read_text_file(const std::string& path, const std::string& what = "case file");
 
 /// Reads a file and parses it (InputError if missing, too large or malformed).
 nlohmann::json read_json_file(const std::string& path);
