@@ -190,6 +190,33 @@ TEST(Cli, HostileCaseTextExitsTwoNamingTheKey) {
     expect_one_error_line(run_gearbench("run " + write_case("hostile_" + std::to_string(n++), text)), expected);
 }
 
+// micropitting_iso applies the gear-pair validation of every other kind (it returned
+// S_λ 1.097 for shifts that leave pointed teeth, and a negative contact ratio for a centre
+// distance that does not fit), and refuses operating points beyond its oil laws instead of
+// an internal error on a NaN film.
+TEST(Cli, MicropittingValidatesThePairAndItsRange) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed001_micropitting.json");
+  const auto seed = json::parse(in);
+  const std::pair<std::function<void(json&)>, std::string> bad[] = {
+      {[](json& c) { c["gear_pair"]["teeth"] = {21, 17}; }, "gear_pair.center_distance_mm = 476: incompatible"},
+      {[](json& c) {
+         c["gear_pair"].erase("center_distance_mm");
+         c["gear_pair"]["profile_shift"] = {1.5, 1.5};
+       }, "pointed"},
+      {[](json& c) { c["operating"]["pinion_speed_rpm"] = 1e5; }, "operating: the contact temperature reaches"},
+      {[](json& c) { c["operating"]["pinion_torque_Nm"] = 1e9; }, "beyond the 500 °C to which the oil laws"},
+      {[](json& c) { c["micropitting"]["reference_test"]["pinion_torque_Nm"] = 1e7; },
+       "micropitting.reference_test: the contact temperature reaches"},
+  };
+  int n = 0;
+  for (const auto& [edit, expected] : bad) {
+    auto c = seed;
+    edit(c);
+    expect_one_error_line(run_gearbench("run " + write_case("micropitting_bad_" + std::to_string(n++), c.dump())),
+                          expected);
+  }
+}
+
 // A case "file" that is a directory, or endless (/dev/zero, once read until the memory ran
 // out), is refused by name.
 TEST(Cli, CaseFileThatIsNoFile) {
