@@ -29,11 +29,12 @@ using nlohmann::ordered_json;
 /// Cases in one sweep at most: a larger grid is almost surely a mistake in the file.
 constexpr std::size_t max_sweep_cases = 100000;
 
-json::json_pointer key_pointer(const std::string& key) {
-  if (key.empty()) throw InputError("vary: a key is empty; expected a dotted path such as operating.speed_rpm");
+json::json_pointer key_pointer(const std::string& key, const std::string& section) {
+  if (key.empty())
+    throw InputError(fmt::format("{}: a key is empty; expected a dotted path such as operating.speed_rpm", section));
   // A case nests no deeper than the parser allows; a longer path would build a deeper one.
   if (static_cast<std::size_t>(std::count(key.begin(), key.end(), key.front() == '/' ? '/' : '.')) >= model::max_json_depth)
-    throw InputError(fmt::format("vary.\"{}\": deeper than {} levels", model::shown_text(key), model::max_json_depth));
+    throw InputError(fmt::format("{}.\"{}\": deeper than {} levels", section, model::shown_text(key), model::max_json_depth));
   try {
     if (key.front() == '/') return json::json_pointer(key);
     std::string pointer;
@@ -43,14 +44,14 @@ json::json_pointer key_pointer(const std::string& key) {
       if (end == std::string::npos) end = key.size();
       const std::string part = key.substr(start, end - start);
       if (part.empty())
-        throw InputError(fmt::format("vary.\"{}\": empty segment in the dotted path", model::shown_text(key)));
+        throw InputError(fmt::format("{}.\"{}\": empty segment in the dotted path", section, model::shown_text(key)));
       pointer += "/";
       for (char c : part) pointer += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
       start = end + 1;
     }
     return json::json_pointer(pointer);
   } catch (const json::exception& e) {
-    throw InputError(fmt::format("vary.\"{}\": not a valid JSON pointer ({})", model::shown_text(key), e.what()));
+    throw InputError(fmt::format("{}.\"{}\": not a valid JSON pointer ({})", section, model::shown_text(key), e.what()));
   }
 }
 
@@ -102,6 +103,21 @@ SweepAxis parse_axis(const std::string& key, const ordered_json& values) {
   return axis;
 }
 
+/// Two axes that reach the same place (a dotted path and a JSON pointer to one key, or a key
+/// and a key inside it) would overwrite each other: the table would show values never used.
+void check_axes_apart(const std::vector<SweepAxis>& axes) {
+  for (std::size_t i = 0; i < axes.size(); ++i)
+    for (std::size_t j = i + 1; j < axes.size(); ++j) {
+      const auto a = axes[i].where.to_string(), b = axes[j].where.to_string();
+      const std::string& shorter = a.size() <= b.size() ? a : b;
+      const std::string& longer = a.size() <= b.size() ? b : a;
+      if (longer.compare(0, shorter.size(), shorter) == 0 && (longer.size() == shorter.size() || longer[shorter.size()] == '/'))
+        throw InputError(fmt::format("vary.\"{}\": reaches the same key as vary.\"{}\" ({}); vary each key once",
+                                     model::shown_text(axes[j].key), model::shown_text(axes[i].key),
+                                     model::shown_text(shorter)));
+    }
+}
+
 /// The product of the axis lengths, refused above max_sweep_cases before it can overflow
 /// (64 axes of 2 values once wrapped to 0 cases).
 void check_case_count(const std::vector<SweepAxis>& axes) {
@@ -133,13 +149,14 @@ SweepSpec parse_sweep_spec(const ordered_json& spec, const std::string& sweep_di
   if (!spec["vary"].is_object() || spec["vary"].empty())
     throw InputError("vary: must be a non-empty object of key -> array of values");
   for (const auto& [key, values] : spec["vary"].items()) s.axes.push_back(parse_axis(key, values));
+  check_axes_apart(s.axes);
   check_case_count(s.axes);
   if (!spec["outputs"].is_array() || spec["outputs"].empty())
     throw InputError("outputs: must be a non-empty array of result keys (dotted paths)");
   for (const auto& o : spec["outputs"]) {
     if (!o.is_string() || o.get<std::string>().empty())
       throw InputError(fmt::format("outputs: {} is not a result key", model::shown_value(json(o))));
-    key_pointer(o.get<std::string>());  // well-formed
+    key_pointer(o.get<std::string>(), "outputs");  // well-formed
     s.outputs.push_back(o.get<std::string>());
   }
   s.description = spec.value("description", "");
@@ -181,7 +198,7 @@ SweepRow run_sweep_case(const SweepSpec& spec, std::size_t index) {
   try {
     const json result = run_case(spec.case_at(index));
     for (const auto& name : spec.outputs) {
-      const auto where = key_pointer(name);
+      const auto where = key_pointer(name, "outputs");
       if (!result.contains(where)) {
         std::vector<std::string> keys;
         for (const auto& item : result.items()) keys.push_back(item.key());

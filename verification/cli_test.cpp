@@ -261,8 +261,9 @@ TEST(Cli, LostOutputIsAFailure) {
   EXPECT_TRUE(fs::is_character_file("/dev/full"));
 }
 
-// A sweep is read as strictly as a case: a huge number names its key, and an axis product
-// beyond the case cap is refused before it can wrap (64 axes of 2 values once made 0 cases).
+// A sweep is read as strictly as a case: a huge number names its key, an axis product
+// beyond the case cap is refused before it can wrap (64 axes of 2 values once made 0 cases),
+// and every axis reaches a key of its own.
 TEST(Cli, HostileSweepText) {
   const auto out = temp_path("hostile_sweep_out").string();
   const std::string base = R"("base": {"kind": "geometry"}, "outputs": ["center_distance_mm"])";
@@ -274,6 +275,16 @@ TEST(Cli, HostileSweepText) {
   expect_one_error_line(run_gearbench("sweep " + write_case("sweep_wide", "{" + base + ", \"vary\": {" + axes + "}}") +
                                       " --out " + out),
                         "vary: more than 100000 cases");
+  // Two axes on one key showed values in the table that were never used; a bad outputs
+  // entry was blamed on vary.
+  expect_one_error_line(
+      run_gearbench("sweep " + write_case("sweep_same_key", R"({"base": {"kind": "geometry"}, "outputs": ["a"],
+                    "vary": {"gear_pair.teeth": [[22, 32]], "/gear_pair/teeth": [[20, 30]]}})") + " --out " + out),
+      R"(vary."/gear_pair/teeth": reaches the same key as vary."gear_pair.teeth")");
+  expect_one_error_line(
+      run_gearbench("sweep " + write_case("sweep_bad_output", R"({"base": {"kind": "geometry"}, "outputs": ["a..b"],
+                    "vary": {"gear_pair.teeth": [[22, 32]]}})") + " --out " + out),
+      R"(outputs."a..b": empty segment)");
   EXPECT_FALSE(fs::exists(out));
 }
 
