@@ -599,6 +599,22 @@ TEST(Cli, DynamicsRunsAndValidates) {
   }
 }
 
+// At 1e6 rpm the run does not reach its periodic response in the run-up; the result says so
+// instead of presenting a transient's dynamic factor as the answer (issue 20).
+TEST(Cli, DynamicsSaysWhenTheRunIsNotPeriodic) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics.json");
+  auto j = json::parse(in);
+  const auto periodic = run_gearbench("run " + write_case("dynamics_periodic", j.dump()));
+  ASSERT_EQ(periodic.exit_code, 0) << periodic.err;
+  EXPECT_TRUE(json::parse(periodic.out)["notes"].empty()) << periodic.out.substr(0, 200);
+  j["operating"]["pinion_speed_rpm"] = 1e6;
+  const auto fast = run_gearbench("run " + write_case("dynamics_1e6_rpm", j.dump()));
+  ASSERT_EQ(fast.exit_code, 0) << fast.err;
+  const auto r = json::parse(fast.out);
+  EXPECT_GT(r["diagnostics"]["periodicity"].get<double>(), 1e-3);
+  EXPECT_NE(r["notes"].dump().find("not periodic"), std::string::npos) << r["notes"].dump();
+}
+
 // The dynamics kind reads the efficiency kind's friction section and the backlash.
 TEST(Cli, DynamicsTakesAFrictionLawAndBacklash) {
   std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics_friction_backlash.json");
@@ -698,6 +714,22 @@ TEST(Cli, EfficiencyRunsAndValidates) {
   const auto h = run_gearbench("run " + write_case("efficiency_helical_iso", helical.dump()));
   EXPECT_EQ(h.exit_code, 2);
   EXPECT_NE(h.err.find("load_sharing = \"iso\": helical pairs use a uniform load"), std::string::npos) << h.err;
+}
+
+// A loss above the input power is refused, naming the term out of its range (issue 20: a
+// 1000/1000-tooth pair returned efficiency_mean -2.24 with exit 0, from the rolling loss of
+// a 24 µm film).
+TEST(Cli, EfficiencyRefusesALossAboveTheInput) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed004_spur_efficiency.json");
+  auto j = json::parse(in);
+  std::ifstream with_oil(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics_friction_backlash.json");
+  const auto oil = json::parse(with_oil);
+  j["lubricant"] = oil["lubricant"];
+  j["materials"] = oil["materials"];
+  j["friction"] = {{"model", "xu_kahraman"}};
+  j["gear_pair"]["teeth"] = {1000, 1000};
+  expect_one_error_line(run_gearbench("run " + write_case("efficiency_thick_film", j.dump())),
+                        "the rolling loss (2.09e+04 W mean) exceeds the input power with a film of");
 }
 
 TEST(Cli, MalformedJsonGivesLine) {
