@@ -24,21 +24,21 @@ namespace {
 namespace fs = std::filesystem;
 
 /// Writes `text` to `path` as it is, for what cannot be replaced: a device, a pipe, a
-/// dangling symbolic link.
-void write_through(const std::string& path, const std::string& text) {
+/// dangling symbolic link. Messages name `output_path`, the path as given to -o.
+void write_through(const std::string& path, const std::string& text, const std::string& output_path) {
   std::ofstream out(path, std::ios::binary);
-  if (!out) throw InputError(fmt::format("-o {}: cannot write the output file", model::shown_text(path)));
+  if (!out) throw InputError(fmt::format("-o {}: cannot write the output file", model::shown_text(output_path)));
   out << text;
   out.flush();
-  if (!out) throw OutputError(fmt::format("-o {}: writing the output failed: {}", model::shown_text(path),
+  if (!out) throw OutputError(fmt::format("-o {}: writing the output failed: {}", model::shown_text(output_path),
                                           std::strerror(errno)));
 }
 
 /// A temporary file next to `path`, then a rename: the file never holds half a result.
-void replace_atomically(const fs::path& path, const std::string& text) {
+void replace_atomically(const fs::path& path, const std::string& text, const std::string& output_path) {
   const std::string temp = path.string() + ".tmp-" + std::to_string(::getpid());
   try {
-    write_through(temp, text);
+    write_through(temp, text, output_path);
   } catch (...) {
     std::remove(temp.c_str());
     throw;
@@ -46,7 +46,7 @@ void replace_atomically(const fs::path& path, const std::string& text) {
   if (std::rename(temp.c_str(), path.c_str()) != 0) {
     const int error = errno;
     std::remove(temp.c_str());
-    throw OutputError(fmt::format("-o {}: writing the output failed: {}", model::shown_text(path.string()),
+    throw OutputError(fmt::format("-o {}: writing the output failed: {}", model::shown_text(output_path),
                                   std::strerror(error)));
   }
 }
@@ -66,11 +66,11 @@ void write_output(const std::string& text, const std::string& output_path) {
     throw InputError(fmt::format("-o {}: is a directory; name the file to write the result to",
                                  model::shown_text(output_path)));
   if (fs::is_regular_file(status))
-    replace_atomically(fs::canonical(output_path), text);
+    replace_atomically(fs::canonical(output_path), text, output_path);
   else if (!fs::exists(status) && !fs::is_symlink(fs::symlink_status(output_path, ec)))
-    replace_atomically(output_path, text);
+    replace_atomically(output_path, text, output_path);
   else
-    write_through(output_path, text);
+    write_through(output_path, text, output_path);
 }
 }  // namespace
 

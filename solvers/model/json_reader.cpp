@@ -107,7 +107,7 @@ Json parse_tracked(const std::string& text, const std::string& source_name) {
     // Count lines up to the failing byte: nlohmann reports a byte offset (1-based).
     const std::size_t upto = std::min<std::size_t>(e.byte, text.size());
     const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(upto == 0 ? 0 : upto - 1), '\n');
-    throw InputError(fmt::format("{}: malformed JSON at line {}: {}", source_name, line,
+    throw InputError(fmt::format("{}: malformed JSON at line {}: {}", shown_text(source_name), line,
                                  shown_text(parser_reason(e.what()))));
   } catch (const typename Json::out_of_range& e) {
     // The one range error of the parser: "number overflow parsing '1e999'".
@@ -115,7 +115,7 @@ Json parse_tracked(const std::string& text, const std::string& source_name) {
     const auto open = what.find('\''), close = what.rfind('\'');
     const auto where = position.where();
     throw InputError(fmt::format("{} = {}: beyond the range of a double (about ±1.8e308)",
-                                 where.empty() ? source_name : where,
+                                 where.empty() ? shown_text(source_name) : where,
                                  shown_text(what.substr(open + 1, close - open - 1))));
   }
 }
