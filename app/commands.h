@@ -1,5 +1,6 @@
 #pragma once
 // The subcommands of the gearbench CLI. Each returns the process exit code.
+#include <stdexcept>
 #include <string>
 
 namespace gearbench::app {
@@ -10,6 +11,13 @@ enum ExitCode : int {
   exit_failed = 1,         ///< a verification check failed / a regression was found
   exit_bad_input = 2,      ///< InputError
   exit_not_converged = 3,  ///< ConvergenceError
+};
+
+/// A result that could not be written (a full disk, a closed stdout): exit code 1, but not
+/// reported as an internal error.
+class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 int run_command(const std::string& case_path, const std::string& output_path);

@@ -33,7 +33,7 @@ const KindSpec& KindRegistry::find(const std::string& name) const {
       nearest = n;
     }
   }
-  throw InputError(fmt::format("kind = \"{}\": unknown kind{}; allowed values are {}", name,
+  throw InputError(fmt::format("kind = {}: unknown kind{}; allowed values are {}", model::shown_value(name),
                                best <= 3 ? fmt::format(" (did you mean '{}'?)", nearest) : "",
                                fmt::join(names, ", ")));
 }
@@ -43,7 +43,7 @@ nlohmann::json run_case(const nlohmann::json& case_json) {
   const auto it = case_json.find("kind");
   if (it == case_json.end()) throw InputError("kind: missing required key");
   if (!it->is_string())
-    throw InputError(fmt::format("kind = {}: must be a string", it->dump()));
+    throw InputError(fmt::format("kind = {}: must be a string", model::shown_value(*it)));
   auto result = KindRegistry::instance().find(it->get<std::string>()).run(case_json);
   ensure_finite(result);
   return result;

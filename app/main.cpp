@@ -1,18 +1,43 @@
 // gearbench: command-line front end. Parses, dispatches, prints; no physics.
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstring>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <iostream>
 
 #include "build_info.h"
 #include "commands.h"
 #include "interrupt.h"
 #include "model/errors.h"
+#include "model/json_reader.h"
 
 namespace {
 
 std::string version_string() {
   return fmt::format("gearbench {} (git {}{})", gearbench::build::version(),
                      gearbench::build::git_sha(), gearbench::build::git_dirty() ? "-dirty" : "");
+}
+
+/// Flushes stdout; OutputError if anything written to it was lost (`run > /dev/full`).
+void check_stdout() {
+  std::cout.flush();
+  if (!std::cout) throw gearbench::app::OutputError(fmt::format("writing to stdout failed: {}", std::strerror(errno)));
+}
+
+/// A usage error as the one `error:` line of the CLI contract (CLI11 prints two lines, and
+/// no prefix); help and version go out as CLI11 prints them.
+int usage_error(const CLI::App& cli, const CLI::ParseError& e) {
+  using namespace gearbench::app;
+  if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) {
+    cli.exit(e);
+    return exit_ok;
+  }
+  std::string message = e.what();
+  if (const auto extras = cli.remaining(); !extras.empty())
+    message += fmt::format("; not understood: {}", fmt::join(extras, " "));
+  std::cerr << "error: " << gearbench::model::shown_text(message) << " (see gearbench --help)\n";
+  return exit_bad_input;
 }
 
 }  // namespace
@@ -83,11 +108,10 @@ int main(int argc, char** argv) {
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = cli.exit(e);
-    return code == 0 ? exit_ok : exit_bad_input;
+    return usage_error(cli, e);
   }
 
-  try {
+  const auto dispatch = [&]() -> int {
     if (*run) return run_command(case_path, output_path);
     if (*verify) return verify_command(tier, out_dir, cases_dir, bench_record, only);
     if (*compare) return report_compare_command(before, after);
@@ -101,15 +125,23 @@ int main(int argc, char** argv) {
                             .repetitions = repetitions_option->count() ? repetitions : (record_run ? 10 : 1),
                             .record = record_run});
     }
+    return exit_failed;
+  };
+  try {
+    const int code = dispatch();
+    check_stdout();
+    return code;
   } catch (const gearbench::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return exit_bad_input;
   } catch (const gearbench::ConvergenceError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return exit_not_converged;
+  } catch (const OutputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return exit_failed;
   } catch (const std::exception& e) {
     std::cerr << "error: internal: " << e.what() << "\n";
     return exit_failed;
   }
-  return exit_failed;
 }

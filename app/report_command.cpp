@@ -9,6 +9,7 @@
 #include "compare.h"
 #include "interrupt.h"
 #include "model/errors.h"
+#include "model/json_reader.h"
 #include "perf_history.h"
 
 namespace gearbench::app {
@@ -17,9 +18,35 @@ namespace fs = std::filesystem;
 
 std::string default_perf_dir() { return std::string(build::source_dir()) + "/reports/perf"; }
 
+namespace {
+/// A report that compare_reports can read: it looks up these keys without checking them, so a
+/// report.json of another structure is refused here, naming the first key that is amiss.
+nlohmann::json comparable_report(const std::string& path) {
+  auto report = reports::load_report(path);
+  const auto refuse = [&path](const std::string& key, const std::string& what) {
+    throw InputError(fmt::format("{}: {}: {}; not a gearbench report", model::shown_text(path), key, what));
+  };
+  const auto machine = report.find("machine");
+  if (machine == report.end() || !machine->is_object() || !machine->contains("fingerprint"))
+    refuse("machine.fingerprint", "missing");
+  const auto& checks = report["checks"];
+  if (!checks.is_array()) refuse("checks", "must be an array");
+  for (std::size_t i = 0; i < checks.size(); ++i) {
+    const auto key = fmt::format("checks[{}]", i);
+    const auto& check = checks[i];
+    if (!check.is_object()) refuse(key, "must be an object");
+    for (const char* text : {"id", "status"})
+      if (!check.contains(text) || !check[text].is_string()) refuse(key + "." + text, "must be a string");
+    for (const char* number : {"value", "seconds"})
+      if (!check.contains(number) || !(check[number].is_number() || check[number].is_null()))
+        refuse(key + "." + number, "must be a number or null");
+  }
+  return report;
+}
+}  // namespace
+
 int report_compare_command(const std::string& before, const std::string& after) {
-  const auto comparison = reports::compare_reports(reports::load_report(before),
-                                                   reports::load_report(after));
+  const auto comparison = reports::compare_reports(comparable_report(before), comparable_report(after));
   std::cout << comparison.text();
   return comparison.regressions.empty() ? exit_ok : exit_failed;
 }

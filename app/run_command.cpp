@@ -1,6 +1,9 @@
 #include <chrono>
 #include <condition_variable>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
 #include <iostream>
@@ -17,28 +20,57 @@
 namespace gearbench::app {
 
 namespace {
+
+namespace fs = std::filesystem;
+
+/// Writes `text` to `path` as it is, for what cannot be replaced: a device, a pipe, a
+/// dangling symbolic link. Messages name `output_path`, the path as given to -o.
+void write_through(const std::string& path, const std::string& text, const std::string& output_path) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw InputError(fmt::format("-o {}: cannot write the output file", model::shown_text(output_path)));
+  out << text;
+  out.flush();
+  if (!out) throw OutputError(fmt::format("-o {}: writing the output failed: {}", model::shown_text(output_path),
+                                          std::strerror(errno)));
+}
+
+/// A temporary file next to `path`, then a rename: the file never holds half a result.
+void replace_atomically(const fs::path& path, const std::string& text, const std::string& output_path) {
+  const std::string temp = path.string() + ".tmp-" + std::to_string(::getpid());
+  try {
+    write_through(temp, text, output_path);
+  } catch (...) {
+    std::remove(temp.c_str());
+    throw;
+  }
+  if (std::rename(temp.c_str(), path.c_str()) != 0) {
+    const int error = errno;
+    std::remove(temp.c_str());
+    throw OutputError(fmt::format("-o {}: writing the output failed: {}", model::shown_text(output_path),
+                                  std::strerror(error)));
+  }
+}
+
+/// `-o`: a regular file (through any symbolic links to it) or a new path is replaced
+/// atomically; a device or pipe (/dev/null, /dev/stdout) is written through, never renamed
+/// over; a directory is refused.
 void write_output(const std::string& text, const std::string& output_path) {
   if (output_path.empty()) {
-    std::cout << text;
+    std::cout << text;  // main checks that stdout took it
     return;
   }
-  // A temporary file next to the target, then a rename: -o never holds half a result.
   const DeferInterrupts defer;
-  const std::string temp = output_path + ".tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream out(temp);
-    if (!out) throw InputError(fmt::format("-o {}: cannot write the output file", output_path));
-    out << text;
-    out.flush();
-    if (!out) {
-      std::remove(temp.c_str());
-      throw std::runtime_error(fmt::format("-o {}: writing the output failed", output_path));
-    }
-  }
-  if (std::rename(temp.c_str(), output_path.c_str()) != 0) {
-    std::remove(temp.c_str());
-    throw std::runtime_error(fmt::format("-o {}: writing the output failed", output_path));
-  }
+  std::error_code ec;
+  const auto status = fs::status(output_path, ec);
+  if (fs::is_directory(status))
+    throw InputError(fmt::format("-o {}: is a directory; name the file to write the result to",
+                                 model::shown_text(output_path)));
+  if (fs::is_regular_file(status))
+    replace_atomically(fs::canonical(output_path), text, output_path);
+  else if (!fs::exists(status) && !fs::is_symlink(fs::symlink_status(output_path, ec)))
+    replace_atomically(output_path, text, output_path);
+  else
+    write_through(output_path, text, output_path);
 }
 }  // namespace
 

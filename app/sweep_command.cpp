@@ -29,8 +29,12 @@ using nlohmann::ordered_json;
 /// Cases in one sweep at most: a larger grid is almost surely a mistake in the file.
 constexpr std::size_t max_sweep_cases = 100000;
 
-json::json_pointer key_pointer(const std::string& key) {
-  if (key.empty()) throw InputError("vary: a key is empty; expected a dotted path such as operating.speed_rpm");
+json::json_pointer key_pointer(const std::string& key, const std::string& section) {
+  if (key.empty())
+    throw InputError(fmt::format("{}: a key is empty; expected a dotted path such as operating.speed_rpm", section));
+  // A case nests no deeper than the parser allows; a longer path would build a deeper one.
+  if (static_cast<std::size_t>(std::count(key.begin(), key.end(), key.front() == '/' ? '/' : '.')) >= model::max_json_depth)
+    throw InputError(fmt::format("{}.\"{}\": deeper than {} levels", section, model::shown_text(key), model::max_json_depth));
   try {
     if (key.front() == '/') return json::json_pointer(key);
     std::string pointer;
@@ -39,14 +43,15 @@ json::json_pointer key_pointer(const std::string& key) {
       auto end = key.find('.', start);
       if (end == std::string::npos) end = key.size();
       const std::string part = key.substr(start, end - start);
-      if (part.empty()) throw InputError(fmt::format("vary.\"{}\": empty segment in the dotted path", key));
+      if (part.empty())
+        throw InputError(fmt::format("{}.\"{}\": empty segment in the dotted path", section, model::shown_text(key)));
       pointer += "/";
       for (char c : part) pointer += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
       start = end + 1;
     }
     return json::json_pointer(pointer);
   } catch (const json::exception& e) {
-    throw InputError(fmt::format("vary.\"{}\": not a valid JSON pointer ({})", key, e.what()));
+    throw InputError(fmt::format("{}.\"{}\": not a valid JSON pointer ({})", section, model::shown_text(key), e.what()));
   }
 }
 
@@ -72,7 +77,8 @@ json SweepSpec::case_at(std::size_t index) const {
     try {
       c[axes[k].where] = values[k];
     } catch (const json::exception& e) {
-      throw InputError(fmt::format("vary.\"{}\": cannot be set in the base case ({})", axes[k].key, e.what()));
+      throw InputError(fmt::format("vary.\"{}\": cannot be set in the base case ({})", model::shown_text(axes[k].key),
+                                   model::shown_text(e.what())));
     }
   }
   return c;
@@ -81,7 +87,7 @@ json SweepSpec::case_at(std::size_t index) const {
 namespace {
 
 json load_base(const ordered_json& base, const std::string& sweep_dir) {
-  if (base.is_object()) return json::parse(base.dump());
+  if (base.is_object()) return json(base);
   if (!base.is_string()) throw InputError("base: must be a case file path or a case object");
   const std::string path = base.get<std::string>();
   const fs::path beside = fs::path(sweep_dir) / path;
@@ -90,10 +96,38 @@ json load_base(const ordered_json& base, const std::string& sweep_dir) {
 
 SweepAxis parse_axis(const std::string& key, const ordered_json& values) {
   if (!values.is_array() || values.empty())
-    throw InputError(fmt::format("vary.\"{}\" = {}: must be a non-empty array of values", key, values.dump()));
+    throw InputError(fmt::format("vary.\"{}\" = {}: must be a non-empty array of values", model::shown_text(key),
+                                 model::shown_value(json(values))));
   SweepAxis axis{key, key_pointer(key), {}};
-  for (const auto& v : values) axis.values.push_back(json::parse(v.dump()));
+  for (const auto& v : values) axis.values.emplace_back(v);
   return axis;
+}
+
+/// Two axes that reach the same place (a dotted path and a JSON pointer to one key, or a key
+/// and a key inside it) would overwrite each other: the table would show values never used.
+void check_axes_apart(const std::vector<SweepAxis>& axes) {
+  for (std::size_t i = 0; i < axes.size(); ++i)
+    for (std::size_t j = i + 1; j < axes.size(); ++j) {
+      const auto a = axes[i].where.to_string(), b = axes[j].where.to_string();
+      const std::string& shorter = a.size() <= b.size() ? a : b;
+      const std::string& longer = a.size() <= b.size() ? b : a;
+      if (longer.compare(0, shorter.size(), shorter) == 0 && (longer.size() == shorter.size() || longer[shorter.size()] == '/'))
+        throw InputError(fmt::format("vary.\"{}\": reaches the same key as vary.\"{}\" ({}); vary each key once",
+                                     model::shown_text(axes[j].key), model::shown_text(axes[i].key),
+                                     model::shown_text(shorter)));
+    }
+}
+
+/// The product of the axis lengths, refused above max_sweep_cases before it can overflow
+/// (64 axes of 2 values once wrapped to 0 cases).
+void check_case_count(const std::vector<SweepAxis>& axes) {
+  std::size_t n = 1;
+  for (const auto& a : axes) {
+    if (n > max_sweep_cases / a.values.size())
+      throw InputError(fmt::format("vary: more than {} cases ({} axes); at most {} are allowed", max_sweep_cases,
+                                   axes.size(), max_sweep_cases));
+    n *= a.values.size();
+  }
 }
 
 }  // namespace
@@ -102,7 +136,8 @@ SweepSpec parse_sweep_spec(const ordered_json& spec, const std::string& sweep_di
   if (!spec.is_object()) throw InputError("sweep: must be a JSON object with base, vary and outputs");
   for (const auto& [key, value] : spec.items())
     if (key != "base" && key != "vary" && key != "outputs" && key != "description")
-      throw InputError(fmt::format("{}: unknown key; allowed keys are base, vary, outputs, description", key));
+      throw InputError(fmt::format("{}: unknown key; allowed keys are base, vary, outputs, description",
+                                   model::shown_text(key)));
   for (const char* key : {"base", "vary", "outputs"})
     if (!spec.contains(key)) throw InputError(fmt::format("{}: missing required key", key));
   SweepSpec s;
@@ -110,18 +145,18 @@ SweepSpec parse_sweep_spec(const ordered_json& spec, const std::string& sweep_di
   s.base_source = spec["base"].is_string() ? spec["base"].get<std::string>() : std::string("(inline)");
   s.base = load_base(spec["base"], sweep_dir);
   if (!s.base.is_object() || !s.base.contains("kind"))
-    throw InputError(fmt::format("base = {}: not a case (no \"kind\")", s.base_source));
+    throw InputError(fmt::format("base = {}: not a case (no \"kind\")", model::shown_text(s.base_source)));
   if (!spec["vary"].is_object() || spec["vary"].empty())
     throw InputError("vary: must be a non-empty object of key -> array of values");
   for (const auto& [key, values] : spec["vary"].items()) s.axes.push_back(parse_axis(key, values));
-  if (s.size() > max_sweep_cases)
-    throw InputError(fmt::format("vary: {} cases; at most {} are allowed", s.size(), max_sweep_cases));
+  check_axes_apart(s.axes);
+  check_case_count(s.axes);
   if (!spec["outputs"].is_array() || spec["outputs"].empty())
     throw InputError("outputs: must be a non-empty array of result keys (dotted paths)");
   for (const auto& o : spec["outputs"]) {
     if (!o.is_string() || o.get<std::string>().empty())
-      throw InputError(fmt::format("outputs: {} is not a result key", o.dump()));
-    key_pointer(o.get<std::string>());  // well-formed
+      throw InputError(fmt::format("outputs: {} is not a result key", model::shown_value(json(o))));
+    key_pointer(o.get<std::string>(), "outputs");  // well-formed
     s.outputs.push_back(o.get<std::string>());
   }
   s.description = spec.value("description", "");
@@ -130,13 +165,10 @@ SweepSpec parse_sweep_spec(const ordered_json& spec, const std::string& sweep_di
 }
 
 SweepSpec read_sweep_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(fmt::format("{}: cannot open the sweep file", path));
-  const std::string text{std::istreambuf_iterator<char>(in), {}};
-  static_cast<void>(model::parse_json(text, path));  // malformed: an error with its line number
   const fs::path p(path);
   // ordered_json keeps the axes in the order written (the last one varies fastest).
-  return parse_sweep_spec(ordered_json::parse(text), p.parent_path().string(), p.stem().string());
+  return parse_sweep_spec(model::parse_ordered_json(model::read_text_file(path, "sweep file"), path),
+                          p.parent_path().string(), p.stem().string());
 }
 
 json SweepRow::to_json() const {
@@ -166,7 +198,7 @@ SweepRow run_sweep_case(const SweepSpec& spec, std::size_t index) {
   try {
     const json result = run_case(spec.case_at(index));
     for (const auto& name : spec.outputs) {
-      const auto where = key_pointer(name);
+      const auto where = key_pointer(name, "outputs");
       if (!result.contains(where)) {
         std::vector<std::string> keys;
         for (const auto& item : result.items()) keys.push_back(item.key());

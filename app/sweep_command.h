@@ -45,8 +45,9 @@ SweepSpec parse_sweep_spec(const nlohmann::ordered_json& spec, const std::string
                            const std::string& name);
 SweepSpec read_sweep_file(const std::string& path);
 
-/// A dotted path or JSON pointer as a JSON pointer (InputError when malformed).
-nlohmann::json::json_pointer key_pointer(const std::string& key);
+/// A dotted path or JSON pointer as a JSON pointer (InputError when malformed, naming the
+/// key under `section`: "vary" or "outputs").
+nlohmann::json::json_pointer key_pointer(const std::string& key, const std::string& section = "vary");
 
 struct SweepRow {
   std::size_t index = 0;

@@ -25,12 +25,13 @@ struct Outcome {
   std::string err;
 };
 
-Outcome run_gearbench(const std::string& args) {
+/// Runs gearbench; its stdout goes to `stdout_to` when given (then `out` stays empty).
+Outcome run_gearbench(const std::string& args, const std::string& stdout_to = "") {
   const auto dir = fs::temp_directory_path();
   const auto out_file = dir / ("gb_cli_out_" + std::to_string(::getpid()));
   const auto err_file = dir / ("gb_cli_err_" + std::to_string(::getpid()));
   const std::string command = std::string("'") + GEARBENCH_EXE + "' " + args + " >'" +
-                              out_file.string() + "' 2>'" + err_file.string() + "'";
+                              (stdout_to.empty() ? out_file.string() : stdout_to) + "' 2>'" + err_file.string() + "'";
   const int status = std::system(command.c_str());
   auto slurp = [](const fs::path& p) {
     std::ifstream in(p);
@@ -97,15 +98,19 @@ struct BadCase {
 
 class BadInput : public testing::TestWithParam<BadCase> {};
 
-TEST_P(BadInput, ExitTwoWithKeyNamed) {
-  auto j = seed004();
-  GetParam().edit(j);
-  const auto o = run_gearbench("run " + write_case(GetParam().name, j.dump()));
+/// Exit 2, nothing on stdout, and on stderr one line: `error: ` and the expected text.
+void expect_one_error_line(const Outcome& o, const std::string& expected) {
   EXPECT_EQ(o.exit_code, 2) << o.err;
   EXPECT_EQ(o.err.rfind("error: ", 0), 0u) << o.err;
   EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << "one line: " << o.err;
-  EXPECT_NE(o.err.find(GetParam().expected), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find(expected), std::string::npos) << o.err;
   EXPECT_TRUE(o.out.empty());
+}
+
+TEST_P(BadInput, ExitTwoWithKeyNamed) {
+  auto j = seed004();
+  GetParam().edit(j);
+  expect_one_error_line(run_gearbench("run " + write_case(GetParam().name, j.dump())), GetParam().expected);
 }
 
 const BadCase bad_cases[] = {
@@ -153,10 +158,135 @@ const BadCase bad_cases[] = {
        j["gear_pair"]["tip_diameter_mm"] = {309.903, 626.35};
      },
      "gear_pair.tip_diameter_mm[0] = 309.903: must exceed the base diameter"},
+    // Issue 20: forged, cut and wrapped messages; the internal error of a shift sum.
+    {"forged_second_line", [](json& j) { j["kind"] = "geometry\r\nerror: fake second error"; },
+     R"(kind = "geometry\r\nerror: fake second error": unknown kind)"},
+    {"nul_in_key", [](json& j) { j["gear_pair"][std::string("teeth\0", 6)] = 1; },
+     R"(gear_pair.teeth\u0000: unknown key (did you mean 'teeth'?))"},
+    {"integer_beyond_int64", [](json& j) { j["gear_pair"]["teeth"] = {18446744073709551615ULL, 32}; },
+     "gear_pair.teeth[0] = 18446744073709551615: allowed range is [5, 10000]"},
+    {"shift_sum", [](json& j) { j["gear_pair"]["profile_shift"] = {-1.0, -1.0}; },
+     "gear_pair.profile_shift = [-1, -1]: the sum -2 leaves no working pressure angle"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Classes, BadInput, testing::ValuesIn(bad_cases),
                          [](const testing::TestParamInfo<BadCase>& param_info) { return param_info.param.name; });
+
+// Issue 20: case texts no JSON object can hold. Once a stack overflow (SIGSEGV), exit 1
+// ("internal"), or silently the last of two keys.
+TEST(Cli, HostileCaseTextExitsTwoNamingTheKey) {
+  const std::pair<std::string, std::string> cases[] = {
+      {R"({"kind":"geometry","description":)" + std::string(60000, '[') + std::string(60000, ']') + "}",
+       "nested deeper than 64 levels"},
+      {R"({"kind":"geometry","gear_pair":{"teeth":[22,32],"normal_module_mm":1e999}})",
+       "error: gear_pair.normal_module_mm = 1e999: beyond the range of a double"},
+      {R"({"kind":"geometry","operating":{"pinion_torque_Nm":-1e400}})",
+       "error: operating.pinion_torque_Nm = -1e400: beyond the range of a double"},
+      {R"({"kind":"geometry","gear_pair":{"teeth":[22,32],"teeth":[22,33]}})",
+       "error: gear_pair.teeth: duplicate key"},
+  };
+  int n = 0;
+  for (const auto& [text, expected] : cases)
+    expect_one_error_line(run_gearbench("run " + write_case("hostile_" + std::to_string(n++), text)), expected);
+}
+
+// micropitting_iso applies the gear-pair validation of every other kind (it returned
+// S_λ 1.097 for shifts that leave pointed teeth, and a negative contact ratio for a centre
+// distance that does not fit), and refuses operating points beyond its oil laws instead of
+// an internal error on a NaN film.
+TEST(Cli, MicropittingValidatesThePairAndItsRange) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed001_micropitting.json");
+  const auto seed = json::parse(in);
+  const std::pair<std::function<void(json&)>, std::string> bad[] = {
+      {[](json& c) { c["gear_pair"]["teeth"] = {21, 17}; }, "gear_pair.center_distance_mm = 476: incompatible"},
+      {[](json& c) {
+         c["gear_pair"].erase("center_distance_mm");
+         c["gear_pair"]["profile_shift"] = {1.5, 1.5};
+       }, "pointed"},
+      {[](json& c) { c["operating"]["pinion_speed_rpm"] = 1e5; }, "operating: the contact temperature reaches"},
+      {[](json& c) { c["operating"]["pinion_torque_Nm"] = 1e9; }, "beyond the 500 °C to which the oil laws"},
+      {[](json& c) { c["micropitting"]["reference_test"]["pinion_torque_Nm"] = 1e7; },
+       "micropitting.reference_test: the contact temperature reaches"},
+  };
+  int n = 0;
+  for (const auto& [edit, expected] : bad) {
+    auto c = seed;
+    edit(c);
+    expect_one_error_line(run_gearbench("run " + write_case("micropitting_bad_" + std::to_string(n++), c.dump())),
+                          expected);
+  }
+}
+
+// A case "file" that is a directory, or endless (/dev/zero, once read until the memory ran
+// out), is refused by name.
+TEST(Cli, CaseFileThatIsNoFile) {
+  expect_one_error_line(run_gearbench("run " + fs::temp_directory_path().string()), "is a directory, not a case file");
+  expect_one_error_line(run_gearbench("run /dev/zero"), "/dev/zero: larger than 64 MiB");
+}
+
+// -o writes atomically only where it can replace a file: a directory is refused, a device
+// is written through (never renamed over: as root that destroyed /dev/null), a symbolic
+// link keeps pointing at its target, which gets the result.
+TEST(Cli, OutputFileKinds) {
+  const std::string run = "run " GEARBENCH_SOURCE_DIR "/cases/seed004_spur_geometry.json -o ";
+  const auto dir = temp_path("output_dir");
+  fs::create_directories(dir);
+  expect_one_error_line(run_gearbench(run + dir.string()), "is a directory; name the file");
+  EXPECT_TRUE(fs::is_empty(dir));
+  fs::remove_all(dir);
+
+  ASSERT_EQ(run_gearbench(run + "/dev/null").exit_code, 0);
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+
+  const auto target = temp_path("output_target.json"), link = temp_path("output_link.json");
+  std::ofstream(target) << "old";
+  fs::create_symlink(target, link);
+  ASSERT_EQ(run_gearbench(run + link.string()).exit_code, 0);
+  EXPECT_TRUE(fs::is_symlink(link));
+  std::ifstream in(target);
+  EXPECT_TRUE(json::parse(in).contains("contact_ratio_transverse"));
+  fs::remove(link);
+  fs::remove(target);
+}
+
+// A result that cannot be written is a failure (exit 1), never exit 0 with the result lost.
+TEST(Cli, LostOutputIsAFailure) {
+  const std::string run = "run " GEARBENCH_SOURCE_DIR "/cases/seed004_spur_geometry.json";
+  auto o = run_gearbench(run, "/dev/full");
+  EXPECT_EQ(o.exit_code, 1);
+  EXPECT_EQ(o.err, "error: writing to stdout failed: No space left on device\n");
+  o = run_gearbench(run + " -o /dev/full");
+  EXPECT_EQ(o.exit_code, 1);
+  EXPECT_EQ(o.err, "error: -o /dev/full: writing the output failed: No space left on device\n");
+  EXPECT_TRUE(fs::is_character_file("/dev/full"));
+}
+
+// A sweep is read as strictly as a case: a huge number names its key, an axis product
+// beyond the case cap is refused before it can wrap (64 axes of 2 values once made 0 cases),
+// and every axis reaches a key of its own.
+TEST(Cli, HostileSweepText) {
+  const auto out = temp_path("hostile_sweep_out").string();
+  const std::string base = R"("base": {"kind": "geometry"}, "outputs": ["center_distance_mm"])";
+  expect_one_error_line(run_gearbench("sweep " + write_case("sweep_huge", "{" + base + R"(, "vary": {"a": [1, 1e999]}})") +
+                                      " --out " + out),
+                        "vary.a[1] = 1e999: beyond the range of a double");
+  std::string axes;
+  for (int k = 0; k < 64; ++k) axes += (k ? ", \"a" : "\"a") + std::to_string(k) + "\": [1, 2]";
+  expect_one_error_line(run_gearbench("sweep " + write_case("sweep_wide", "{" + base + ", \"vary\": {" + axes + "}}") +
+                                      " --out " + out),
+                        "vary: more than 100000 cases");
+  // Two axes on one key showed values in the table that were never used; a bad outputs
+  // entry was blamed on vary.
+  expect_one_error_line(
+      run_gearbench("sweep " + write_case("sweep_same_key", R"({"base": {"kind": "geometry"}, "outputs": ["a"],
+                    "vary": {"gear_pair.teeth": [[22, 32]], "/gear_pair/teeth": [[20, 30]]}})") + " --out " + out),
+      R"(vary."/gear_pair/teeth": reaches the same key as vary."gear_pair.teeth")");
+  expect_one_error_line(
+      run_gearbench("sweep " + write_case("sweep_bad_output", R"({"base": {"kind": "geometry"}, "outputs": ["a..b"],
+                    "vary": {"gear_pair.teeth": [[22, 32]]}})") + " --out " + out),
+      R"(outputs."a..b": empty segment)");
+  EXPECT_FALSE(fs::exists(out));
+}
 
 TEST(Cli, Seed003StiffnessRuns) {
   const auto o = run_gearbench("run " GEARBENCH_SOURCE_DIR "/cases/seed003_spur_stiffness.json");
@@ -469,6 +599,22 @@ TEST(Cli, DynamicsRunsAndValidates) {
   }
 }
 
+// At 1e6 rpm the run does not reach its periodic response in the run-up; the result says so
+// instead of presenting a transient's dynamic factor as the answer (issue 20).
+TEST(Cli, DynamicsSaysWhenTheRunIsNotPeriodic) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics.json");
+  auto j = json::parse(in);
+  const auto periodic = run_gearbench("run " + write_case("dynamics_periodic", j.dump()));
+  ASSERT_EQ(periodic.exit_code, 0) << periodic.err;
+  EXPECT_TRUE(json::parse(periodic.out)["notes"].empty()) << periodic.out.substr(0, 200);
+  j["operating"]["pinion_speed_rpm"] = 1e6;
+  const auto fast = run_gearbench("run " + write_case("dynamics_1e6_rpm", j.dump()));
+  ASSERT_EQ(fast.exit_code, 0) << fast.err;
+  const auto r = json::parse(fast.out);
+  EXPECT_GT(r["diagnostics"]["periodicity"].get<double>(), 1e-3);
+  EXPECT_NE(r["notes"].dump().find("not periodic"), std::string::npos) << r["notes"].dump();
+}
+
 // The dynamics kind reads the efficiency kind's friction section and the backlash.
 TEST(Cli, DynamicsTakesAFrictionLawAndBacklash) {
   std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics_friction_backlash.json");
@@ -570,6 +716,22 @@ TEST(Cli, EfficiencyRunsAndValidates) {
   EXPECT_NE(h.err.find("load_sharing = \"iso\": helical pairs use a uniform load"), std::string::npos) << h.err;
 }
 
+// A loss above the input power is refused, naming the term out of its range (issue 20: a
+// 1000/1000-tooth pair returned efficiency_mean -2.24 with exit 0, from the rolling loss of
+// a 24 µm film).
+TEST(Cli, EfficiencyRefusesALossAboveTheInput) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed004_spur_efficiency.json");
+  auto j = json::parse(in);
+  std::ifstream with_oil(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics_friction_backlash.json");
+  const auto oil = json::parse(with_oil);
+  j["lubricant"] = oil["lubricant"];
+  j["materials"] = oil["materials"];
+  j["friction"] = {{"model", "xu_kahraman"}};
+  j["gear_pair"]["teeth"] = {1000, 1000};
+  expect_one_error_line(run_gearbench("run " + write_case("efficiency_thick_film", j.dump())),
+                        "the rolling loss (2.09e+04 W mean) exceeds the input power with a film of");
+}
+
 TEST(Cli, MalformedJsonGivesLine) {
   const auto o = run_gearbench("run " + write_case("malformed", "{\n  \"kind\": \"geometry\",\n  \"gear_pair\": {,\n}\n"));
   EXPECT_EQ(o.exit_code, 2);
@@ -580,10 +742,21 @@ TEST(Cli, MissingFileAndBadArguments) {
   auto o = run_gearbench("run /nonexistent/case.json");
   EXPECT_EQ(o.exit_code, 2);
   EXPECT_NE(o.err.find("cannot open the case file"), std::string::npos) << o.err;
-  o = run_gearbench("verify --tier medium");
-  EXPECT_EQ(o.exit_code, 2);
-  o = run_gearbench("frobnicate");
-  EXPECT_EQ(o.exit_code, 2);
+  // Usage errors follow the contract too: one `error:` line (CLI11 printed two, unprefixed).
+  expect_one_error_line(run_gearbench("verify --tier medium"), "--tier");
+  expect_one_error_line(run_gearbench("frobnicate"), "frobnicate");
+  expect_one_error_line(run_gearbench("run"), "case is required");
+}
+
+// report compare on a report.json of another structure: once a lookup of a missing key in a
+// const JSON object (undefined behaviour), now the key is named.
+TEST(Cli, CompareRefusesAForeignReport) {
+  const auto bare = write_case("report_bare", R"({"schema_version": 1, "checks": [{"id": "a"}]})");
+  expect_one_error_line(run_gearbench("report compare " + bare + " " + bare), "machine.fingerprint: missing");
+  const auto check = write_case("report_check", R"({"schema_version": 1, "machine": {"fingerprint": "x"},
+                                                    "checks": [{"id": "a", "status": "pass", "value": "1"}]})");
+  expect_one_error_line(run_gearbench("report compare " + check + " " + check),
+                        "checks[0].value: must be a number or null");
 }
 
 // The report plumbing on the geometry checks (--only keeps the test in seconds under ASan;

@@ -1,9 +1,10 @@
-// Extreme input for every case kind (issue 11): every number in a small case of each kind is
-// set in turn to zero, −1, 1e-300, 1e300, a string and null; every array is emptied and
-// lengthened. Within the allowed ranges the
-// answer is a finite result (exit 0) or, for the iterative solvers, a clear non-convergence
-// (exit 3); beyond them exit 2 with the key named. Never a crash, a hang (30 s), another
-// exit code or a NaN (gearbench checks every result for NaN/Inf before it prints it).
+// Extreme input for every case kind (issues 11 and 20): every number in a small case of each
+// kind is set in turn to zero, −1, 1e-300, 1e300, 2^64 − 1, a string and null, and written
+// as −1e999 (beyond double); every array is emptied and lengthened. Within the allowed
+// ranges the answer is a finite result (exit 0) or, for the iterative solvers, a clear
+// non-convergence (exit 3); beyond them exit 2 with the key named. Never a crash, a hang
+// (30 s), another exit code or a NaN (gearbench checks every result for NaN/Inf before it
+// prints it).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -26,12 +27,12 @@ struct Outcome {
   std::string err;
 };
 
-Outcome run_case(const json& c, const std::string& tag) {
+Outcome run_case_text(const std::string& text, const std::string& tag) {
   const auto dir = fs::temp_directory_path();
   const auto pid = std::to_string(::getpid());
   const auto case_file = dir / ("gb_extreme_" + tag + "_" + pid + ".json");
   const auto err_file = dir / ("gb_extreme_err_" + pid);
-  std::ofstream(case_file) << c.dump();
+  std::ofstream(case_file) << text;
   const std::string command = "timeout 30 '" + std::string(GEARBENCH_EXE) + "' run '" + case_file.string() +
                               "' >/dev/null 2>'" + err_file.string() + "'";
   const int status = std::system(command.c_str());
@@ -41,6 +42,8 @@ Outcome run_case(const json& c, const std::string& tag) {
   fs::remove(err_file);
   return o;
 }
+
+Outcome run_case(const json& c, const std::string& tag) { return run_case_text(c.dump(), tag); }
 
 using Keys = std::vector<std::pair<json::json_pointer, std::string>>;
 
@@ -73,19 +76,36 @@ void expect_clear_answer(const std::string& kind, const json& c, const json::jso
   EXPECT_TRUE(ok) << "exit " << o.exit_code;
 }
 
-/// Every number set to each extreme value; every array emptied and given a third element.
+/// A number no double holds, written into the case text: exit 2 naming its key (issue 20:
+/// once exit 1 from the parser).
+void expect_huge_number_named(const std::string& kind, json c, const json::json_pointer& pointer,
+                              const std::string& key, int n) {
+  c[pointer] = "@huge@";
+  std::string text = c.dump();
+  text.replace(text.find("\"@huge@\""), 8, "-1e999");
+  const auto o = run_case_text(text, kind + std::to_string(n));
+  SCOPED_TRACE(kind + ": " + pointer.to_string() + " = -1e999\n" + o.err);
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.err.find(key), std::string::npos);  // or key[i] of an array
+  EXPECT_NE(o.err.find(" = -1e999: beyond the range of a double"), std::string::npos);
+}
+
+/// Every number set to each extreme value (and beyond double range in the text); every
+/// array emptied and given a third element.
 void walk(const std::string& kind, json base, bool may_not_converge) {
   base.erase("description");
   Keys numbers, arrays;
   leaves(base, json::json_pointer(), "", numbers, arrays);
-  const json values[] = {0, -1, 1e-300, 1e300, "x", nullptr};
+  const json values[] = {0, -1, 1e-300, 1e300, 18446744073709551615ULL, "x", nullptr};
   int n = 0;
-  for (const auto& [pointer, key] : numbers)
+  for (const auto& [pointer, key] : numbers) {
     for (const auto& v : values) {
       json c = base;
       c[pointer] = v;
       expect_clear_answer(kind, c, pointer, key, may_not_converge, n++);
     }
+    expect_huge_number_named(kind, base, pointer, key, n++);
+  }
   for (const auto& [pointer, key] : arrays) {
     json empty = base, longer = base;
     empty[pointer] = json::array();
@@ -146,6 +166,8 @@ TEST(ExtremeInput, ThermalEhlPoint) {
   c["thermal"] = {{"max_iterations", 6}, {"film_nodes", 5}, {"solid_nodes", 4}};
   walk("tehl_point", c, true);
 }
+
+TEST(ExtremeInput, MicropittingIso) { walk("micropitting_iso", load("seed001_micropitting.json"), false); }
 
 TEST(ExtremeInput, Efficiency) {
   auto c = load("seed004_spur_efficiency.json");

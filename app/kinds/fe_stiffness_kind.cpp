@@ -44,7 +44,7 @@ fe::FeToothOptions read_options(model::ObjectReader& root, const json& case_json
   fe::FeToothOptions o;
   if (root.has("plane_stress")) {
     if (!case_json["plane_stress"].is_boolean())
-      throw InputError("plane_stress = " + case_json["plane_stress"].dump() + ": must be true or false");
+      throw InputError("plane_stress = " + model::shown_value(case_json["plane_stress"]) + ": must be true or false");
     o.plane_strain = !case_json["plane_stress"].get<bool>();
   }
   if (auto bore = root.optional_number_pair("bore_diameter_mm", model::Range::positive(1e7), "mm"))
@@ -58,7 +58,7 @@ fe::FeToothOptions read_options(model::ObjectReader& root, const json& case_json
   }
   if (root.has("rigid_body")) {
     if (!case_json["rigid_body"].is_boolean())
-      throw InputError("rigid_body = " + case_json["rigid_body"].dump() + ": must be true or false");
+      throw InputError("rigid_body = " + model::shown_value(case_json["rigid_body"]) + ": must be true or false");
     o.rigid_body = case_json["rigid_body"].get<bool>();
   }
   o.fe = read_fe_options(root);

@@ -1,10 +1,13 @@
 // Case kind "micropitting_iso": ISO/TR 15144-1 method B at A, AB, B, C, D, DE, E of a gear
 // pair, the reference test that rates the oil by the same method, and S_λ.
+#include <fmt/format.h>
 #include <numbers>
 
+#include "geometry/gear_pair_geometry.h"
 #include "iso15144_section.h"
 #include "kind_registry.h"
 #include "model/case_reader.h"
+#include "model/errors.h"
 
 namespace gearbench::app {
 namespace {
@@ -70,6 +73,24 @@ json result_json(const iso::Result& r) {
           {"points", points}};
 }
 
+/// The oil laws of the TR (Walther viscosity, linear density) describe a liquid oil; past
+/// 500 °C no gear oil is one, and far past it the density turns negative and the film NaN
+/// (1e5 rpm or 1e9 N·m once ended in an internal error). Refused as bad input, naming the
+/// section whose speed and torque get there.
+constexpr double max_contact_temperature_C = 500.0;
+
+void check_oil_laws_hold(const iso::Result& r, const iso::Inputs& in) {
+  for (const auto& y : r.points) {
+    const double celsius = y.contact_temperature - 273.15;
+    if (celsius <= max_contact_temperature_C) continue;  // a NaN fails too
+    throw InputError(fmt::format(
+        "{}: the contact temperature reaches {:.0f} °C at point {} (pinion speed {} rpm, torque {} N*m), beyond "
+        "the {:.0f} °C to which the oil laws of ISO/TR 15144-1 hold; lower the speed or the torque",
+        in.operating_section, celsius, y.name, model::format_value(in.pinion_speed * 30.0 / std::numbers::pi),
+        model::format_value(in.pinion_torque), max_contact_temperature_C));
+  }
+}
+
 json run_micropitting(const json& case_json) {
   model::ObjectReader root(case_json, "");
   root.string("kind");
@@ -77,8 +98,13 @@ json run_micropitting(const json& case_json) {
   const auto gear_case = model::read_gear_case(root);
   const auto mc = read_micropitting(root, gear_case, "micropitting_iso");
   root.finish();
+  // The pair gets the validation every kind applies (undercut, pointed teeth, centre
+  // distance against the shifts, contact ratio): the ISO/TR method assumes a sound pair.
+  static_cast<void>(geometry::GearPairGeometry(gear_case.gear_pair));
 
   const auto a = iso::assess(mc.gear, mc.test, mc.material_factor);
+  check_oil_laws_hold(a.gear, mc.gear);
+  check_oil_laws_hold(a.reference_test, mc.test);
   return {{"kind", "micropitting_iso"},
           {"method", "ISO/TR 15144-1:2014 method B (unmodified profiles); see docs/iso15144.md for "
                      "the coefficients not confirmed at the source"},

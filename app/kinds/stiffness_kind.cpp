@@ -41,7 +41,7 @@ json run_stiffness(const json& case_json) {
   options.slices = root.optional_integer("slices", 1, 10000).value_or(50);
   if (root.has("foundation")) {
     if (!case_json["foundation"].is_boolean())
-      throw InputError("foundation = " + case_json["foundation"].dump() + ": must be true or false");
+      throw InputError("foundation = " + model::shown_value(case_json["foundation"]) + ": must be true or false");
     options.foundation = case_json["foundation"].get<bool>();
   }
   if (auto bore = root.optional_number_pair("bore_diameter_mm", model::Range::positive(1e7), "mm"))

@@ -2,6 +2,8 @@
 
 #include "errors.h"
 
+#include <cmath>
+#include <fmt/format.h>
 #include <numbers>
 
 namespace gearbench::model {
@@ -11,6 +13,24 @@ constexpr double mm = 1e-3;
 constexpr double um = 1e-6;
 constexpr double deg = std::numbers::pi / 180.0;
 constexpr double GPa = 1e9;
+}  // namespace
+
+namespace {
+/// Negative shifts bring the pair closer: inv α_wt = inv α_t + 2 tan α_n (x1 + x2)/(z1 + z2)
+/// (ISO 21771:2007) must stay positive, or no working pressure angle, and no centre
+/// distance, exists for the pair (x = −1 on both gears of 22/32 teeth, for one).
+void check_shift_sum(const GearPair& g, const std::string& key) {
+  const double tan_alpha_n = std::tan(g.normal_pressure_angle);
+  const double alpha_t = std::atan(tan_alpha_n / std::cos(g.helix_angle));
+  const double z_sum = g.teeth[0] + g.teeth[1];
+  const double lowest = -(std::tan(alpha_t) - alpha_t) * z_sum / (2.0 * tan_alpha_n);
+  const double sum = g.profile_shift[0] + g.profile_shift[1];
+  if (sum <= lowest)
+    throw InputError(fmt::format("{} = [{}, {}]: the sum {} leaves no working pressure angle for {} + {} teeth; "
+                                 "the sum must exceed {:.4g}",
+                                 key, format_value(g.profile_shift[0]), format_value(g.profile_shift[1]),
+                                 format_value(sum), g.teeth[0], g.teeth[1], lowest));
+}
 }  // namespace
 
 GearPair read_gear_pair(ObjectReader s) {
@@ -31,6 +51,7 @@ GearPair read_gear_pair(ObjectReader s) {
   g.dedendum_coef = s.optional_number("dedendum_coef", Range::positive(2.5)).value_or(1.25);
   g.root_radius_coef =
       s.optional_number("root_radius_coef", {0.0, 1.0, false, true}).value_or(0.38);
+  check_shift_sum(g, s.key_path("profile_shift"));
   if (auto a = s.optional_number("center_distance_mm", Range::positive(1e6), "mm"))
     g.center_distance = *a * mm;
   if (auto da = s.optional_number_pair("tip_diameter_mm", Range::positive(1e7), "mm"))

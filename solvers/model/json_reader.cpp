@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
-#include <sstream>
+#include <limits>
+#include <set>
+#include <vector>
 
 #include "errors.h"
 
@@ -26,26 +29,179 @@ std::string Range::describe() const {
 
 std::string format_value(double v) { return fmt::format("{}", v); }
 
-json parse_json(const std::string& text, const std::string& source_name) {
+namespace {
+
+/// Follows the parser through the document (it calls back at every key, value and bracket)
+/// to know the key path it is at, so that an error inside the text can name its key; and
+/// refuses a key given twice in one object and nesting deeper than max_json_depth.
+template <class Json>
+class ParsePosition {
+ public:
+  bool operator()(int /*depth*/, typename Json::parse_event_t event, Json& parsed) {
+    using Event = typename Json::parse_event_t;
+    switch (event) {
+      case Event::object_start:
+      case Event::array_start:
+        if (frames_.size() >= max_json_depth)
+          throw InputError(fmt::format("{}: nested deeper than {} levels", where(), max_json_depth));
+        frames_.push_back({event == Event::array_start, {}, 0, {}});
+        break;
+      case Event::key: {
+        auto& frame = frames_.back();
+        frame.key = parsed.template get<std::string>();
+        if (!frame.keys.insert(frame.key).second)
+          throw InputError(fmt::format("{}: duplicate key; give each key once", where()));
+        break;
+      }
+      case Event::object_end:
+      case Event::array_end:
+        frames_.pop_back();
+        element_done();
+        break;
+      case Event::value:
+        element_done();
+        break;
+    }
+    return true;
+  }
+
+  /// "gear_pair.teeth[1]"; "" at the top.
+  [[nodiscard]] std::string where() const {
+    std::string path;
+    for (const auto& f : frames_) {
+      if (f.array)
+        path += fmt::format("[{}]", f.index);
+      else if (!f.keys.empty())
+        path += (path.empty() ? "" : ".") + shown_text(f.key);
+    }
+    return path;
+  }
+
+ private:
+  struct Frame {
+    bool array;
+    std::string key;          ///< the key being read (objects)
+    std::size_t index;        ///< the element being read (arrays)
+    std::set<std::string> keys;
+  };
+  void element_done() {
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+  }
+  std::vector<Frame> frames_;
+};
+
+/// The part of a parser message after its "[json.exception...] ... at line 1, column 2: ".
+std::string parser_reason(const std::string& what) {
+  const auto colon = what.rfind(": ");
+  return colon == std::string::npos ? what : what.substr(colon + 2);
+}
+
+template <class Json>
+Json parse_tracked(const std::string& text, const std::string& source_name) {
+  ParsePosition<Json> position;
   try {
-    return json::parse(text);
-  } catch (const json::parse_error& e) {
+    return Json::parse(text, [&position](int depth, typename Json::parse_event_t event, Json& parsed) {
+      return position(depth, event, parsed);
+    });
+  } catch (const typename Json::parse_error& e) {
     // Count lines up to the failing byte: nlohmann reports a byte offset (1-based).
     const std::size_t upto = std::min<std::size_t>(e.byte, text.size());
     const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(upto == 0 ? 0 : upto - 1), '\n');
-    std::string what = e.what();
-    const auto colon = what.rfind(": ");
-    throw InputError(fmt::format("{}: malformed JSON at line {}: {}", source_name, line,
-                                 colon == std::string::npos ? what : what.substr(colon + 2)));
+    throw InputError(fmt::format("{}: malformed JSON at line {}: {}", shown_text(source_name), line,
+                                 shown_text(parser_reason(e.what()))));
+  } catch (const typename Json::out_of_range& e) {
+    // The one range error of the parser: "number overflow parsing '1e999'".
+    const std::string what = e.what();
+    const auto open = what.find('\''), close = what.rfind('\'');
+    const auto where = position.where();
+    throw InputError(fmt::format("{} = {}: beyond the range of a double (about ±1.8e308)",
+                                 where.empty() ? shown_text(source_name) : where,
+                                 shown_text(what.substr(open + 1, close - open - 1))));
   }
 }
 
-json read_json_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(fmt::format("{}: cannot open the case file", path));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parse_json(buffer.str(), path);
+}  // namespace
+
+json parse_json(const std::string& text, const std::string& source_name) {
+  return parse_tracked<json>(text, source_name);
+}
+
+nlohmann::ordered_json parse_ordered_json(const std::string& text, const std::string& source_name) {
+  return parse_tracked<nlohmann::ordered_json>(text, source_name);
+}
+
+std::string read_text_file(const std::string& path, const std::string& what) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(fmt::format("{}: is a directory, not a {}", shown_text(path), what));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(fmt::format("{}: cannot open the {}", shown_text(path), what));
+  // Read in chunks up to the cap: /dev/zero or a runaway file must not fill the memory.
+  std::string text;
+  std::array<char, 1 << 16> chunk{};
+  while (in.read(chunk.data(), chunk.size()) || in.gcount() > 0) {
+    text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+    if (text.size() > max_file_bytes)
+      throw InputError(fmt::format("{}: larger than {} MiB, the most gearbench reads in a {}",
+                                   shown_text(path), max_file_bytes >> 20, what));
+  }
+  if (in.bad()) throw InputError(fmt::format("{}: cannot read the {}", shown_text(path), what));
+  return text;
+}
+
+json read_json_file(const std::string& path) { return parse_json(read_text_file(path), path); }
+
+namespace {
+/// At most `n` bytes of `s`, not cutting a UTF-8 sequence, with "..." when cut.
+std::string cut(const std::string& s, std::size_t n) {
+  if (s.size() <= n) return s;
+  std::size_t end = n - 3;
+  while (end > 0 && (static_cast<unsigned char>(s[end]) & 0xC0) == 0x80) --end;
+  return s.substr(0, end) + "...";
+}
+
+constexpr std::size_t shown_length = 40;
+
+/// Compact JSON of `v`, stopping once `out` is longer than shown_length.
+void render(const json& v, std::string& out) {
+  if (v.is_string()) {
+    out += '"' + shown_text(v.get<std::string>()) + '"';
+  } else if (v.is_array() || v.is_object()) {
+    out += v.is_array() ? '[' : '{';
+    bool first = true;
+    for (const auto& item : v.items()) {
+      if (out.size() > shown_length) break;
+      if (!first) out += ',';
+      first = false;
+      if (v.is_object()) out += '"' + shown_text(item.key()) + "\":";
+      render(item.value(), out);
+    }
+    out += v.is_array() ? ']' : '}';
+  } else {
+    out += v.dump();
+  }
+}
+}  // namespace
+
+std::string shown_text(const std::string& text) {
+  constexpr std::size_t longest = 200;  // a file path fits; a megabyte key does not
+  std::string out;
+  for (const char c : text) {
+    if (out.size() > longest) break;
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') out += "\\n";
+    else if (c == '\r') out += "\\r";
+    else if (c == '\t') out += "\\t";
+    else if (u < 0x20 || u == 0x7f) out += fmt::format("\\u{:04x}", u);
+    else out += c;
+  }
+  return cut(out, longest);
+}
+
+std::string shown_value(const json& value) {
+  std::string out;
+  render(value, out);
+  return cut(out, shown_length);
 }
 
 namespace {
@@ -58,17 +214,13 @@ std::string type_name(const json& v) {
   if (v.is_object()) return "an object";
   return "null";
 }
-std::string shown(const json& v) {
-  std::string s = v.dump();
-  return s.size() > 40 ? s.substr(0, 37) + "..." : s;
-}
 }  // namespace
 
 ObjectReader::ObjectReader(const json& object, std::string path)
     : object_(object), path_(std::move(path)) {
   if (!object_.is_object())
     throw InputError(fmt::format("{} = {}: must be an object, got {}",
-                                 path_.empty() ? "case" : path_, shown(object_),
+                                 path_.empty() ? "case" : path_, shown_value(object_),
                                  type_name(object_)));
 }
 
@@ -92,7 +244,7 @@ const json& ObjectReader::require(const std::string& key) {
 double ObjectReader::checked_number(const json& value, const std::string& full_key,
                                     const Range& range, const std::string& unit) const {
   if (!value.is_number())
-    throw InputError(fmt::format("{} = {}: must be a number, got {}", full_key, shown(value),
+    throw InputError(fmt::format("{} = {}: must be a number, got {}", full_key, shown_value(value),
                                  type_name(value)));
   const double v = value.get<double>();
   if (!std::isfinite(v))
@@ -115,16 +267,22 @@ std::optional<double> ObjectReader::optional_number(const std::string& key,
   return number(key, range, unit);
 }
 
-int ObjectReader::integer(const std::string& key, int lo, int hi) {
-  const json& value = require(key);
+int ObjectReader::checked_integer(const json& value, const std::string& full_key, int lo, int hi) const {
   if (!value.is_number_integer())
-    throw InputError(fmt::format("{} = {}: must be an integer, got {}", key_path(key),
-                                 shown(value), type_name(value)));
-  const auto v = value.get<long long>();
+    throw InputError(fmt::format("{} = {}: must be an integer, got {}", full_key, shown_value(value),
+                                 type_name(value)));
+  // Above the range of long long (up to 2^64 - 1) nlohmann holds an unsigned: compare it as
+  // one, so that 18446744073709551615 is never read as -1.
+  const bool fits = !value.is_number_unsigned() ||
+                    value.get<std::uint64_t>() <= static_cast<std::uint64_t>(std::numeric_limits<long long>::max());
+  const auto v = fits ? value.get<long long>() : static_cast<long long>(hi) + 1;
   if (v < lo || v > hi)
-    throw InputError(
-        fmt::format("{} = {}: allowed range is [{}, {}]", key_path(key), v, lo, hi));
+    throw InputError(fmt::format("{} = {}: allowed range is [{}, {}]", full_key, value.dump(), lo, hi));
   return static_cast<int>(v);
+}
+
+int ObjectReader::integer(const std::string& key, int lo, int hi) {
+  return checked_integer(require(key), key_path(key), lo, hi);
 }
 
 std::optional<int> ObjectReader::optional_integer(const std::string& key, int lo, int hi) {
@@ -137,10 +295,10 @@ std::string ObjectReader::string(const std::string& key,
   const json& value = require(key);
   if (!value.is_string())
     throw InputError(fmt::format("{} = {}: must be a string, got {}", key_path(key),
-                                 shown(value), type_name(value)));
+                                 shown_value(value), type_name(value)));
   auto s = value.get<std::string>();
   if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), s) == allowed.end())
-    throw InputError(fmt::format("{} = \"{}\": allowed values are {}", key_path(key), s,
+    throw InputError(fmt::format("{} = {}: allowed values are {}", key_path(key), shown_value(value),
                                  fmt::join(allowed, ", ")));
   return s;
 }
@@ -155,7 +313,7 @@ namespace {
 const json& pair_value(const json& value, const std::string& full_key) {
   if (!value.is_array() || value.size() != 2)
     throw InputError(fmt::format("{} = {}: must be an array of two values [gear 1, gear 2]",
-                                 full_key, shown(value)));
+                                 full_key, shown_value(value)));
   return value;
 }
 }  // namespace
@@ -178,16 +336,8 @@ std::optional<std::array<double, 2>> ObjectReader::optional_number_pair(
 std::array<int, 2> ObjectReader::integer_pair(const std::string& key, int lo, int hi) {
   const json& value = pair_value(require(key), key_path(key));
   std::array<int, 2> out{};
-  for (std::size_t i = 0; i < 2; ++i) {
-    const auto item_key = fmt::format("{}[{}]", key_path(key), i);
-    if (!value[i].is_number_integer())
-      throw InputError(fmt::format("{} = {}: must be an integer, got {}", item_key,
-                                   shown(value[i]), type_name(value[i])));
-    const auto v = value[i].get<long long>();
-    if (v < lo || v > hi)
-      throw InputError(fmt::format("{} = {}: allowed range is [{}, {}]", item_key, v, lo, hi));
-    out[i] = static_cast<int>(v);
-  }
+  for (std::size_t i = 0; i < 2; ++i)
+    out[i] = checked_integer(value[i], fmt::format("{}[{}]", key_path(key), i), lo, hi);
   return out;
 }
 
@@ -203,7 +353,7 @@ ObjectReader::ObjectPair ObjectReader::object_or_pair(const std::string& key) {
     return {{value[0], value[1]}, {base + "[0]", base + "[1]"}};
   throw InputError(fmt::format(
       "{} = {}: must be one object (both gears) or an array of two objects", key_path(key),
-      shown(value)));
+      shown_value(value)));
 }
 
 void ObjectReader::accept(const std::string& key) { known_.insert(key); }
@@ -236,7 +386,7 @@ void ObjectReader::finish() const {
       }
     }
     const bool close = !best.empty() && best_distance <= std::max<std::size_t>(3, best.size() / 3);
-    throw InputError(fmt::format("{}: unknown key{}", key_path(item.key()),
+    throw InputError(fmt::format("{}: unknown key{}", key_path(shown_text(item.key())),
                                  close ? fmt::format(" (did you mean '{}'?)", best)
                                        : fmt::format(" (known keys: {})", fmt::join(known_, ", "))));
   }

@@ -27,11 +27,30 @@ struct Range {
 /// Formats a number the way an error message shows it (shortest round-trip form).
 std::string format_value(double v);
 
-/// Parses JSON text; malformed input becomes an InputError that gives the line number.
-nlohmann::json parse_json(const std::string& text, const std::string& source_name);
+/// Limits on what gearbench reads: deeper nesting or a larger file is refused as bad input
+/// before it can exhaust the stack or the memory.
+inline constexpr std::size_t max_json_depth = 64;
+inline constexpr std::size_t max_file_bytes = std::size_t{64} << 20;
 
-/// Reads a file and parses it (InputError if missing or malformed).
+/// Parses JSON text; malformed input becomes an InputError that gives the line number, and
+/// a number beyond double range, a duplicate key or nesting deeper than max_json_depth one
+/// that names the key path.
+nlohmann::json parse_json(const std::string& text, const std::string& source_name);
+/// The same, keeping the keys in the order written.
+nlohmann::ordered_json parse_ordered_json(const std::string& text, const std::string& source_name);
+
+/// The content of a regular file (or a device/pipe) of at most max_file_bytes; InputError
+/// if it is missing, a directory or too large. `what` names the file in messages.
+std::string read_text_file(const std::string& path, const std::string& what = "case file");
+
+/// Reads a file and parses it (InputError if missing, too large or malformed).
 nlohmann::json read_json_file(const std::string& path);
+
+/// Text from the input as a message shows it: control characters escaped (a NUL or a line
+/// break cannot cut or forge the one-line message), at most a few dozen characters.
+std::string shown_text(const std::string& text);
+/// A JSON value as a message shows it: compact, escaped, cut short, never dumped whole.
+std::string shown_value(const nlohmann::json& value);
 
 class ObjectReader {
  public:
@@ -80,6 +99,7 @@ class ObjectReader {
   const nlohmann::json& require(const std::string& key);
   double checked_number(const nlohmann::json& value, const std::string& full_key,
                         const Range& range, const std::string& unit) const;
+  int checked_integer(const nlohmann::json& value, const std::string& full_key, int lo, int hi) const;
 
   const nlohmann::json& object_;
   std::string path_;

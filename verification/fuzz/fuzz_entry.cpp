@@ -1,17 +1,33 @@
 #include "fuzz_entry.h"
 
 #include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
 
 #include "kind_registry.h"
 #include "model/case_reader.h"
 #include "model/errors.h"
+#include "model/json_reader.h"
 
 namespace gearbench::fuzz {
 namespace {
 
-/// The input as JSON; malformed text is the parser's business, not a finding.
+/// The input as JSON through the parser `gearbench run` uses (nesting, number range and
+/// duplicate keys bounded there); what it refuses is bad input, not a finding.
 nlohmann::json parse(const std::uint8_t* data, std::size_t size) {
-  return nlohmann::json::parse(data, data + size, nullptr, /*allow_exceptions=*/false);
+  try {
+    return model::parse_json(std::string(reinterpret_cast<const char*>(data), size), "fuzz input");
+  } catch (const InputError&) {
+    return nlohmann::json(nlohmann::json::value_t::discarded);
+  }
+}
+
+/// The message of a refused input is one printable line: a control character taken from
+/// the input could cut it or forge a second `error:` line. Anything else is a finding.
+void check_one_line(const std::exception& e) {
+  for (const char c : std::string(e.what()))
+    if (static_cast<unsigned char>(c) < 0x20)
+      throw std::logic_error(std::string("a control character in the message: ") + e.what());
 }
 
 }  // namespace
@@ -22,7 +38,8 @@ void read_case_bytes(const std::uint8_t* data, std::size_t size) {
   try {
     model::ObjectReader root(j, "");
     (void)model::read_gear_case(root);
-  } catch (const InputError&) {
+  } catch (const InputError& e) {
+    check_one_line(e);
   }
 }
 
@@ -31,8 +48,10 @@ void run_case_bytes(const std::uint8_t* data, std::size_t size) {
   if (j.is_discarded()) return;
   try {
     (void)app::run_case(j);
-  } catch (const InputError&) {
-  } catch (const ConvergenceError&) {
+  } catch (const InputError& e) {
+    check_one_line(e);
+  } catch (const ConvergenceError& e) {
+    check_one_line(e);
   }
 }
 
