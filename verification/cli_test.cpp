@@ -447,6 +447,16 @@ TEST(Cli, EhlTransientRunsAndValidates) {
   const auto d = json::parse(diag);
   EXPECT_FALSE(d["diagnostics"]["converged"].get<bool>());
   fs::remove(out);
+
+  // 1000/1000 teeth (issue 20): the step fails on its force balance with a scaled residual of 0
+  // (the pressure cavitated everywhere); the message must say which of the two failed.
+  auto huge = small;
+  huge["time_steps"] = 4;
+  huge["gear_pair"]["teeth"] = {1000, 1000};
+  const auto h = run_gearbench("run " + write_case("ehl_transient_1000_teeth", huge.dump()));
+  EXPECT_EQ(h.exit_code, 3) << h.err;
+  EXPECT_NE(h.err.find("force balance"), std::string::npos) << h.err;
+  EXPECT_NE(h.err.find("both must be below"), std::string::npos) << h.err;
 }
 
 // Two positions on a coarse grid run through; bad input exits 2 naming the key.

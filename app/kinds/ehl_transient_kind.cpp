@@ -58,9 +58,13 @@ json result_json(const ehl::TransientMeshResult& r) {
       {"profiles", profiles},
       {"diagnostics", {{"converged", r.converged}, {"failed_step", r.failed_step},
                        {"failed_residual_history", finite_vector(r.failed_residual_history)},
+                       {"failed_force_balance_history", finite_vector(r.failed_force_history)},
                        {"total_cycles", r.total_cycles}, {"work_units", r.work_units}, {"seconds", r.seconds}}},
   };
 }
+
+/// The last entry of a history (0 for an empty one: the step failed before its first cycle).
+double last_or_zero(const std::vector<double>& v) { return v.empty() ? 0.0 : v.back(); }
 
 json run_ehl_transient(const json& case_json) {
   model::ObjectReader root(case_json, "");
@@ -78,12 +82,12 @@ json run_ehl_transient(const json& case_json) {
   const auto r = ehl::TransientMeshEhl(geometry, *gear_case.operating, fluid, options).run();
   auto out = result_json(r);
   if (!r.converged)
-    throw ConvergenceError(fmt::format("transient EHL: time step {} of {} did not converge in {} cycles (residual "
-                                       "{:.3e}, tolerance {:.1e})", r.failed_step, options.steps,
-                                       r.failed_residual_history.size(),
-                                       r.failed_residual_history.empty() ? 0.0 : r.failed_residual_history.back(),
-                                       options.grid.tolerance),
-                           out.dump(2));
+    throw ConvergenceError(
+        fmt::format("transient EHL: time step {} of {} did not converge in {} cycles (scaled residual {:.3e}, force "
+                    "balance {:.3e}; both must be below {:.1e})",
+                    r.failed_step, options.steps, r.failed_residual_history.size(), last_or_zero(r.failed_residual_history),
+                    last_or_zero(r.failed_force_history), options.grid.tolerance),
+        out.dump(2));
   return out;
 }
 

@@ -142,6 +142,7 @@ TransientMeshResult TransientMeshEhl::run() const {
       out.converged = false;
       out.failed_step = n;
       out.failed_residual_history = r.residual_history;
+      out.failed_force_history = r.force_history;
       break;
     }
     P = r.P;

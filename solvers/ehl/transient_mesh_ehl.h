@@ -69,6 +69,7 @@ struct TransientMeshResult {
   bool converged = true;
   int failed_step = -1;                ///< first step that missed the tolerance
   std::vector<double> failed_residual_history;
+  std::vector<double> failed_force_history;  ///< |∫P dX − F|/F per cycle of that step
   int total_cycles = 0;
   double work_units = 0.0;
   double seconds = 0.0;
