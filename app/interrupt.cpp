@@ -30,6 +30,11 @@ void install_interrupt_handler() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
+void hold_interrupts_to_the_end() {
+  const sigset_t set = interrupt_signals();
+  sigprocmask(SIG_BLOCK, &set, nullptr);
+}
+
 DeferInterrupts::DeferInterrupts() {
   const sigset_t set = interrupt_signals();
   sigprocmask(SIG_BLOCK, &set, &previous_);

@@ -12,6 +12,11 @@ inline constexpr int exit_interrupted = 130;
 
 void install_interrupt_handler();
 
+/// Holds SIGINT and SIGTERM back for the rest of the run and never delivers them: for a run
+/// whose last step commits its result (a report written and its path printed), so that a
+/// Ctrl-C during that step cannot leave the result without its path, or end it with 130.
+void hold_interrupts_to_the_end();
+
 /// Holds SIGINT and SIGTERM back for its lifetime; a signal that arrived meanwhile ends the
 /// program when the scope closes.
 class DeferInterrupts {

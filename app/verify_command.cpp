@@ -25,14 +25,15 @@ int verify_command(const std::string& tier, const std::string& out_dir, const st
   auto report = verification::run_verification(
       parsed, context, [](const std::string& line) { std::cerr << line << std::endl; }, only);
   if (!bench_record.empty()) report.notes.push_back(reports::benchmark_note(model::read_json_file(bench_record)));
-  const std::string folder = [&] {
-    const DeferInterrupts defer;  // the report folder appears whole or not at all
-    return reports::write_report(report, out_dir);
-  }();
+  // The report folder appears whole and its path is printed, or neither: a Ctrl-C before this
+  // point leaves nothing; one after it comes when the work is done, and the run finishes.
+  hold_interrupts_to_the_end();
+  std::cerr << "writing the report..." << std::endl;
+  const std::string folder = reports::write_report(report, out_dir);
   const auto counts = report.counts();
   std::cerr << reports::headline(counts) << "\n";
   for (const auto& f : report.section_failures) std::cerr << fmt::format("section {} FAILED: {}\n", f.id, f.error);
-  std::cout << folder << "/report.md\n";
+  std::cout << folder << "/report.md" << std::endl;
   return verification::gate_passes(counts) ? exit_ok : exit_failed;
 }
 

@@ -580,6 +580,23 @@ TEST(Cli, InterruptWritesNothing) {
   fs::remove_all(dir);
 }
 
+// A Ctrl-C while the report is being written comes after the work is done (issue 20: it left
+// a complete folder, printed no path and exited 130): the run finishes, the report is whole.
+TEST(Cli, InterruptDuringTheReportWriteFinishes) {
+  const auto dir = temp_path("interrupted_report_write");
+  fs::create_directories(dir);
+  EXPECT_EQ(interrupt_gearbench({"verify", "--only", "geometry.seed004", "--out", dir.string()}, "writing the report"),
+            0);
+  std::size_t reports = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    ++reports;
+    EXPECT_TRUE(fs::exists(entry.path() / "report.md")) << entry.path();
+    EXPECT_TRUE(fs::exists(entry.path() / "report.json")) << entry.path();
+  }
+  EXPECT_EQ(reports, 1u);
+  fs::remove_all(dir);
+}
+
 TEST(Cli, DynamicsRunsAndValidates) {
   std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics.json");
   auto j = json::parse(in);
