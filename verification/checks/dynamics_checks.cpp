@@ -9,6 +9,7 @@
 
 #include "check_registry.h"
 #include "dynamics_case.h"
+#include "dynamics_method_checks.h"
 #include "dynamics_reference.h"
 #include "dynamics/spur6_dynamics.h"
 #include "ode/spur6_rk4.h"
@@ -119,25 +120,9 @@ const RegisterCheck rk4_default(CheckSpec{
                      "study: ~2e-7 over 100 cycles); RK4 at 4096 steps a cycle is within ~3e-8 of the exact",
     .tier = Tier::fast, .run = [](const CheckContext& ctx) { return rk4_agreement(ctx, {}); }});
 
-/// Every method offered in `integrator.method`, at rtol 1e-8 (atol 1e-14).
-const auto rk4_per_method = [] {
-  for (const auto& m : dynamics::integrator_methods())
-    if (m.offered) RegisterCheck(CheckSpec{
-        .id = fmt::format("dynamics.rk4.{}", m.key), .section = section, .solver = solver,
-        .reference = "independent RK4 (reference/ode)",
-        .quantity = fmt::format("max |δ − δ_RK4| / p2p(δ) over 10 mesh cycles, {}", m.description), .unit = "-",
-        .tolerance = {1e-5, 0},
-        .justification = "rtol 1e-8 gives every method ~1e-7 of the peak-to-peak or better in the work–precision "
-                         "study (100 cycles); 1e-5 leaves room for the local-to-global error growth",
-        .tier = Tier::fast, .run = [method = m.method](const CheckContext& ctx) {
-          dynamics::IntegratorOptions i;
-          i.method = method;
-          i.relative_tolerance = 1e-8;
-          i.absolute_tolerance = 1e-14;
-          return rk4_agreement(ctx, i);
-        }});
-  return true;
-}();
+const bool rk4_per_method = register_rk4_per_method(
+    "dynamics", section, "independent RK4 (reference/ode)", "max |δ − δ_RK4| / p2p(δ) over 10 mesh cycles",
+    rk4_agreement);
 
 // Free vibration of the independent RK4 model with a pair stiffness that ramps in and out
 // so that the mesh always holds k̄ (no parametric excitation), μ = 0, no damping: the

@@ -8,6 +8,7 @@
 
 #include "check_registry.h"
 #include "dynamics_case.h"
+#include "dynamics_method_checks.h"
 #include "dynamics_reference.h"
 #include "model/errors.h"
 #include "dynamics/herringbone12_dynamics.h"
@@ -115,25 +116,9 @@ const RegisterCheck herringbone_rk4(CheckSpec{
                      "study: ~1e-7 over 100 cycles); RK4 at 2048 steps a cycle is within ~2e-8",
     .tier = Tier::fast, .run = [](const CheckContext& ctx) { return herringbone_rk4_agreement(ctx, {}); }});
 
-/// Every method offered in `integrator.method`, at rtol 1e-8 (atol 1e-14).
-const auto herringbone_rk4_per_method = [] {
-  for (const auto& m : dynamics::integrator_methods())
-    if (m.offered) RegisterCheck(CheckSpec{
-        .id = fmt::format("herringbone12.rk4.{}", m.key), .section = herringbone_section, .solver = solver,
-        .reference = "independent RK4 (reference/ode/herringbone12_rk4)",
-        .quantity = fmt::format("max over halves |δ − δ_RK4| / p2p(δ) over 10 mesh cycles, {}", m.description),
-        .unit = "-", .tolerance = {1e-5, 0},
-        .justification = "rtol 1e-8 gives every method ~1e-7 of the peak-to-peak or better in the work–precision "
-                         "study (100 cycles); 1e-5 leaves room for the local-to-global error growth",
-        .tier = Tier::fast, .run = [method = m.method](const CheckContext& ctx) {
-          dynamics::IntegratorOptions i;
-          i.method = method;
-          i.relative_tolerance = 1e-8;
-          i.absolute_tolerance = 1e-14;
-          return herringbone_rk4_agreement(ctx, i);
-        }});
-  return true;
-}();
+const bool herringbone_rk4_per_method = register_rk4_per_method(
+    "herringbone12", herringbone_section, "independent RK4 (reference/ode/herringbone12_rk4)",
+    "max over halves |δ − δ_RK4| / p2p(δ) over 10 mesh cycles", herringbone_rk4_agreement);
 
 // Over 4 mesh cycles after a 40-cycle run-up: ΔE = W_in − W_out − D_damping − D_friction +
 // W_parametric + W_impact (docs/dynamics-model.md, "Energy balance"), the works integrated by
