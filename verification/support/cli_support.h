@@ -1,0 +1,105 @@
+#pragma once
+// Running the gearbench executable from a test: its exit code, stdout and stderr; temporary
+// case files; and a run interrupted at a given point of its progress.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace gearbench::testing_support {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exit_code;
+  std::string out;
+  std::string err;
+};
+
+/// Runs gearbench; its stdout goes to `stdout_to` when given (then `out` stays empty).
+inline Outcome run_gearbench(const std::string& args, const std::string& stdout_to = "") {
+  const auto dir = fs::temp_directory_path();
+  const auto out_file = dir / ("gb_cli_out_" + std::to_string(::getpid()));
+  const auto err_file = dir / ("gb_cli_err_" + std::to_string(::getpid()));
+  const std::string command = std::string("'") + GEARBENCH_EXE + "' " + args + " >'" +
+                              (stdout_to.empty() ? out_file.string() : stdout_to) + "' 2>'" + err_file.string() + "'";
+  const int status = std::system(command.c_str());
+  auto slurp = [](const fs::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  Outcome o{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out_file), slurp(err_file)};
+  fs::remove(out_file);
+  fs::remove(err_file);
+  return o;
+}
+
+/// A temporary path unique to this test process (ctest runs tests in parallel, and several
+/// builds may test at once).
+inline fs::path temp_path(const std::string& name) {
+  return fs::temp_directory_path() / ("gb_" + name + "_" + std::to_string(::getpid()));
+}
+
+inline std::string write_case(const std::string& name, const std::string& text) {
+  const auto path = temp_path("case_" + name + ".json");
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+/// Starts gearbench with `args`, sends SIGINT after `delay`, and returns its exit status.
+/// Runs gearbench with `args`, sends SIGINT once its stderr shows `marker` (so the signal
+/// lands in the middle of the work whatever the machine's load, not at a fixed delay), and
+/// returns its exit code (−1 if it did not exit normally, −2 if the marker never came).
+inline int interrupt_gearbench(const std::vector<std::string>& args, const std::string& marker) {
+  int pipe_fd[2];
+  if (::pipe(pipe_fd) != 0) return -3;
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::vector<char*> argv{const_cast<char*>(GEARBENCH_EXE)};
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::freopen("/dev/null", "w", stdout);
+    ::dup2(pipe_fd[1], STDERR_FILENO);
+    ::close(pipe_fd[0]);
+    ::close(pipe_fd[1]);
+    ::execv(GEARBENCH_EXE, argv.data());
+    ::_exit(127);
+  }
+  ::close(pipe_fd[1]);
+  std::string seen;
+  char buffer[256];
+  bool found = false;
+  while (!found) {
+    const ssize_t n = ::read(pipe_fd[0], buffer, sizeof buffer);
+    if (n <= 0) break;
+    seen.append(buffer, static_cast<std::size_t>(n));
+    found = seen.find(marker) != std::string::npos;
+  }
+  if (found) ::kill(pid, SIGINT);
+  while (::read(pipe_fd[0], buffer, sizeof buffer) > 0) {
+  }  // drain what it says on its way out, so that it never writes into a closed pipe
+  ::close(pipe_fd[0]);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  if (!found) return -2;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+
+/// Exit 2, nothing on stdout, and on stderr one line: `error: ` and the expected text.
+inline void expect_one_error_line(const Outcome& o, const std::string& expected) {
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  EXPECT_EQ(o.err.rfind("error: ", 0), 0u) << o.err;
+  EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << "one line: " << o.err;
+  EXPECT_NE(o.err.find(expected), std::string::npos) << o.err;
+  EXPECT_TRUE(o.out.empty());
+}
+
+}  // namespace gearbench::testing_support
