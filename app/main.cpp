@@ -11,6 +11,7 @@
 #include "interrupt.h"
 #include "model/errors.h"
 #include "model/json_reader.h"
+#include "model/plugin.h"
 
 namespace {
 
@@ -138,6 +139,9 @@ int main(int argc, char** argv) {
     std::cerr << "error: " << e.what() << "\n";
     return exit_not_converged;
   } catch (const OutputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return exit_failed;
+  } catch (const gearbench::PluginError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return exit_failed;
   } catch (const std::exception& e) {
