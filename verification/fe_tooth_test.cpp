@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "fe_tooth/cantilever.h"
+#include "fe_tooth/fe_backend.h"
 #include "fe_tooth/fe_tooth_stiffness.h"
 #include "model/errors.h"
 
@@ -129,7 +130,7 @@ TEST(FeToothCrack, SlitHasDuplicatedNodes) {
   sizes.far = 3e-3;
   sizes.growth = 0.2;
   sizes.focus = {0.5 * (tooth.radii.root + tooth.radii.tip), 0.0};
-  const auto mesh = mesh_gear(tooth, 0.5 * tooth.radii.root, sizes, slit);
+  const auto mesh = fe_backend().mesh_gear(tooth, 0.5 * tooth.radii.root, sizes, slit);
   std::vector<char> used(mesh.vertices.size(), 0);
   for (const auto& q : mesh.quads)
     for (const auto v : q) used[v] = 1;

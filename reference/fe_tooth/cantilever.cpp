@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "fe_backend.h"
 #include "model/errors.h"
 
 namespace gearbench::reference::fe {
@@ -34,7 +35,7 @@ CantileverResult solve_cantilever(const Cantilever& c, const ElasticOptions& opt
   p.probe_direction = {0.0, -1.0};
 
   CantileverResult r;
-  r.fe = solve_elastic(p, options);
+  r.fe = fe_backend().solve_elastic(p, options);
   r.deflection = r.fe.value;
   const double E = c.material.youngs_modulus, nu = c.material.poisson_ratio;
   // Plane strain stiffens bending by 1/(1 − ν²) (E′ = E/(1 − ν²)); G is unchanged.

@@ -1,6 +1,6 @@
 #pragma once
-// Two-dimensional linear elasticity by deal.II 9.4 (the only translation unit of gearbench
-// that includes deal.II): Q2 (or Qp) elements, plane strain or plane stress, UMFPACK,
+// Two-dimensional linear elasticity by deal.II 9.4 (elasticity.cpp, in the deal.II plugin of
+// fe_backend.h, is the only translation unit of gearbench that includes deal.II): Q2 (or Qp) elements, plane strain or plane stress, UMFPACK,
 // Kelly-driven adaptive refinement until a probed displacement converges, deal.II's
 // ConvergenceTable, optional VTU output. The header keeps deal.II out of its users.
 #include <functional>
@@ -91,6 +91,7 @@ struct ElasticResult {
   double seconds = 0.0;
 };
 
+/// In the deal.II plugin (fe_backend.h): programs call it as fe_backend().solve_elastic.
 ElasticResult solve_elastic(const ElasticProblem& problem, const ElasticOptions& options);
 
 }  // namespace gearbench::reference::fe

@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 
+#include "fe_backend.h"
 #include "model/errors.h"
 
 namespace gearbench::reference::fe {
@@ -95,10 +96,10 @@ FeToothStiffness::FeToothStiffness(const model::GearPair& pair, const std::array
     sizes.far = options_.far_size_modules * m;
     sizes.growth = 0.2;
     sizes.focus = {0.5 * (teeth_[i].radii.root + teeth_[i].radii.tip), 0.0};
-    meshes_[i] = mesh_gear(teeth_[i], bore_[i], sizes);
+    meshes_[i] = fe_backend().mesh_gear(teeth_[i], bore_[i], sizes, std::nullopt);
     if (options_.crack && options_.crack->gear == g && options_.crack->length > 0.0) {
       slits_[i] = pitch_crack_slit(teeth_[i], *options_.crack);
-      slit_meshes_[i] = mesh_gear(teeth_[i], bore_[i], sizes, slits_[i]);
+      slit_meshes_[i] = fe_backend().mesh_gear(teeth_[i], bore_[i], sizes, slits_[i]);
     }
     outline_[i] = local_outline(teeth_[i]);
   }
@@ -184,7 +185,7 @@ ToothCompliance FeToothStiffness::solve_tooth(int gear, double s, bool vtu, doub
   p.field_spacing = field_spacing;
   auto fe_options = options_.fe;
   fe_options.vtu = vtu;
-  c.fe = solve_elastic(p, fe_options);
+  c.fe = fe_backend().solve_elastic(p, fe_options);
   c.compliance = c.fe.value / (options_.load_per_width * pair_.face_width);
   c.contact_compliance = c.fe.cycles.back().load_displacement / (options_.load_per_width * pair_.face_width);
   c.seconds = c.fe.seconds;

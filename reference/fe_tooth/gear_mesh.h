@@ -28,7 +28,8 @@ struct GearMeshSizes {
 /// Meshes the gear of `tooth` (tooth 0 centred on +x) with a bore of radius bore_radius.
 /// With a slit, tooth 0 carries it as a crack: the slit is embedded in the mesh and gmsh's
 /// Plugin(Crack) duplicates its nodes (all but the tip), open at the mouth on the flank.
-/// gmsh is a process-wide singleton: calls are serialised internally.
+/// gmsh is a process-wide singleton: calls are serialised internally. In the deal.II plugin
+/// (fe_backend.h): programs call it as fe_backend().mesh_gear.
 QuadMesh mesh_gear(const ToothOutline& tooth, double bore_radius, const GearMeshSizes& sizes,
                    const std::optional<Slit>& slit = std::nullopt);
 

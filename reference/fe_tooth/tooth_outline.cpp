@@ -68,10 +68,6 @@ std::vector<RackPoint> rack_profile(const model::GearPair& p, double shift, int 
 
 }  // namespace
 
-Vec2 rotate(const Vec2& p, double a) {
-  return {p[0] * std::cos(a) - p[1] * std::sin(a), p[0] * std::sin(a) + p[1] * std::cos(a)};
-}
-
 ToothOutline generate_tooth(const model::GearPair& pair, int gear, int samples) {
   if (pair.helix_angle != 0.0)
     throw InputError("gear_pair.helix_angle_deg = " + std::to_string(pair.helix_angle * 180 / pi) +

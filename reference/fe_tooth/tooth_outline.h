@@ -5,6 +5,7 @@
 // circle and the involute come out of one simulation; the tip circle truncates it.
 // Shares no code with solvers/ (docs/fe-tooth-model.md).
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "model/gear_pair.h"
@@ -57,7 +58,10 @@ struct ContactPath {
 };
 ContactPath contact_path(const model::GearPair& pair);
 
-/// Rotation of p by angle a about the origin.
-Vec2 rotate(const Vec2& p, double a);
+/// Rotation of p by angle a about the origin (inline: the gear mesher in the deal.II plugin
+/// uses it too, and the plugin links nothing of this library).
+inline Vec2 rotate(const Vec2& p, double a) {
+  return {p[0] * std::cos(a) - p[1] * std::sin(a), p[0] * std::sin(a) + p[1] * std::cos(a)};
+}
 
 }  // namespace gearbench::reference::fe
