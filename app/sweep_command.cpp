@@ -5,18 +5,17 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
-#include <cstdlib>
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <mpi.h>
 
 #include "build_info.h"
 #include "commands.h"
 #include "interrupt.h"
 #include "kind_registry.h"
+#include "mpi_session.h"
 #include "model/errors.h"
 #include "model/json_reader.h"
 
@@ -324,71 +323,21 @@ std::vector<reports::Figure> sweep_figures(const SweepSpec& spec, const std::vec
 
 namespace {
 
-/// MPI for the duration of a sweep started by mpirun/mpiexec (their environment says so);
-/// a plain start runs serially without touching MPI.
-class MpiSession {
- public:
-  MpiSession() {
-    for (const char* var : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
-      if (std::getenv(var) != nullptr) active_ = true;
-    if (!active_) return;
-    MPI_Init(nullptr, nullptr);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+/// Every rank's rows on rank 0 in case order (elsewhere: empty), sent as JSON text.
+std::vector<SweepRow> gather_rows(const MpiSession& mpi, const std::vector<SweepRow>& mine) {
+  if (mpi.size() == 1) return mine;
+  json j = json::array();
+  for (const auto& r : mine) {
+    j.push_back(r.to_json());
+    j.back()["seconds"] = r.seconds;
+    j.back()["rank"] = r.rank;
   }
-  ~MpiSession() {
-    if (active_) MPI_Finalize();
-  }
-  MpiSession(const MpiSession&) = delete;
-  MpiSession& operator=(const MpiSession&) = delete;
-  [[nodiscard]] int rank() const { return rank_; }
-  [[nodiscard]] int size() const { return size_; }
-
-  /// Every rank's rows on rank 0 (elsewhere: empty), as JSON text.
-  std::vector<SweepRow> gather(const std::vector<SweepRow>& mine) const {
-    if (!active_ || size_ == 1) return mine;
-    json j = json::array();
-    for (const auto& r : mine) {
-      j.push_back(r.to_json());
-      j.back()["seconds"] = r.seconds;
-      j.back()["rank"] = r.rank;
-    }
-    const std::string text = j.dump();
-    int length = static_cast<int>(text.size());
-    std::vector<int> lengths(static_cast<std::size_t>(size_)), offsets(static_cast<std::size_t>(size_));
-    MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-    std::string all;
-    if (rank_ == 0) {
-      int total = 0;
-      for (int r = 0; r < size_; ++r) {
-        offsets[static_cast<std::size_t>(r)] = total;
-        total += lengths[static_cast<std::size_t>(r)];
-      }
-      all.resize(static_cast<std::size_t>(total));
-    }
-    MPI_Gatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0,
-                MPI_COMM_WORLD);
-    std::vector<SweepRow> rows;
-    for (int r = 0; rank_ == 0 && r < size_; ++r) {
-      const auto part = json::parse(all.substr(static_cast<std::size_t>(offsets[static_cast<std::size_t>(r)]),
-                                               static_cast<std::size_t>(lengths[static_cast<std::size_t>(r)])));
-      for (const auto& row : part) rows.push_back(SweepRow::from_json(row));
-    }
-    std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
-    return rows;
-  }
-
-  /// Rank 0's number on every rank.
-  [[nodiscard]] long broadcast(long value) const {
-    if (active_) MPI_Bcast(&value, 1, MPI_LONG, 0, MPI_COMM_WORLD);
-    return value;
-  }
-
- private:
-  bool active_ = false;
-  int rank_ = 0;
-  int size_ = 1;
-};
+  std::vector<SweepRow> rows;
+  for (const auto& text : mpi.gather(j.dump()))
+    for (const auto& row : json::parse(text)) rows.push_back(SweepRow::from_json(row));
+  std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
+  return rows;
+}
 
 void write_text(const fs::path& path, const std::string& text) {
   const fs::path temp = path.string() + ".tmp";
@@ -443,7 +392,7 @@ int sweep_command(const std::string& sweep_path, const std::string& out_dir, boo
               << std::flush;
     mine.push_back(std::move(row));
   }
-  const auto rows = mpi.gather(mine);
+  const auto rows = gather_rows(mpi, mine);
   // Rank 0 writes; every rank learns how it went, so that none waits for a rank that failed.
   long status = 0;  // number of failed cases, or −1 when the output could not be written
   std::exception_ptr error;
