@@ -33,12 +33,17 @@ namespace {
 
 /// Follows the parser through the document (it calls back at every key, value and bracket)
 /// to know the key path it is at, so that an error inside the text can name its key; and
-/// refuses a key given twice in one object and nesting deeper than max_json_depth.
+/// refuses a key given twice in one object, nesting deeper than max_json_depth and more than
+/// max_json_values values.
 template <class Json>
 class ParsePosition {
  public:
   bool operator()(int /*depth*/, typename Json::parse_event_t event, Json& parsed) {
     using Event = typename Json::parse_event_t;
+    if ((event == Event::value || event == Event::object_start || event == Event::array_start) &&
+        ++values_ > max_json_values)
+      throw InputError(fmt::format("{}: more than {} values in one file, the most gearbench reads (a case holds "
+                                   "a few hundred)", where(), max_json_values));
     switch (event) {
       case Event::object_start:
       case Event::array_start:
@@ -88,6 +93,7 @@ class ParsePosition {
     if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
   }
   std::vector<Frame> frames_;
+  std::size_t values_ = 0;
 };
 
 /// The part of a parser message after its "[json.exception...] ... at line 1, column 2: ".

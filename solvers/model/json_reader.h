@@ -31,10 +31,15 @@ std::string format_value(double v);
 /// before it can exhaust the stack or the memory.
 inline constexpr std::size_t max_json_depth = 64;
 inline constexpr std::size_t max_file_bytes = std::size_t{64} << 20;
+/// Values (numbers, strings, arrays, objects…) in one file: a case holds a few hundred, a
+/// sweep a few thousand. The cap stops a long array, under a key the kinds would refuse, from
+/// being read into memory before the refusal (issue 20: 7.6 GB for 1e8 elements; at most a
+/// few tens of MB now).
+inline constexpr std::size_t max_json_values = 1'000'000;
 
 /// Parses JSON text; malformed input becomes an InputError that gives the line number, and
-/// a number beyond double range, a duplicate key or nesting deeper than max_json_depth one
-/// that names the key path.
+/// a number beyond double range, a duplicate key, nesting deeper than max_json_depth or more
+/// than max_json_values values one that names the key path.
 nlohmann::json parse_json(const std::string& text, const std::string& source_name);
 /// The same, keeping the keys in the order written.
 nlohmann::ordered_json parse_ordered_json(const std::string& text, const std::string& source_name);
