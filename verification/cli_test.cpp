@@ -84,6 +84,9 @@ const BadCase bad_cases[] = {
      "gear_pair.face_width_mm = 0: allowed range is [0.01, 100000] mm"},
     {"speed_negative", [](json& j) { j["operating"]["pinion_speed_rpm"] = -1000; },
      "operating.pinion_speed_rpm = -1000: allowed range is (0, 1000000] rpm"},
+    // Issue 20: a denormal torque once gave the dynamics exit 1, then a dynamic factor of 0.
+    {"torque_denormal", [](json& j) { j["operating"]["pinion_torque_Nm"] = 5e-324; },
+     "operating.pinion_torque_Nm = 5e-324: allowed range is [1e-06, 1000000000] N*m"},
     {"pressure_angle", [](json& j) { j["gear_pair"]["normal_pressure_angle_deg"] = 9.5; },
      "gear_pair.normal_pressure_angle_deg = 9.5: allowed range is [10, 35] deg"},
     {"helix_angle", [](json& j) { j["gear_pair"]["helix_angle_deg"] = 50; },

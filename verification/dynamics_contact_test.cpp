@@ -19,6 +19,7 @@
 #include "dynamics/serial_kernels.h"
 #include "model/errors.h"
 #include "dynamics/pair_friction.h"
+#include "dynamics/response_analysis.h"
 #include "efficiency/mesh_loss.h"
 #include "support/test_support.h"
 
@@ -231,4 +232,20 @@ TEST(DynamicsIntegrator, SerialKernelsComputeWhatSundialsComputes) {
 }
 
 }  // namespace
+// The energy balance's relative residual is over the dissipation; with nothing dissipated it
+// is over the largest other term, and 0 when every term is 0 (issue 20: once 0/0, exit 1).
+TEST(DynamicsEnergyBalance, RelativeResidualIsFiniteWithoutDissipation) {
+  dynamics::EnergyBalance e;
+  EXPECT_EQ(e.relative_residual(), 0.0);
+  e.input = 10.0;
+  e.output = 8.0;
+  e.damping = 1.5;
+  e.friction = 0.5;
+  e.energy_change = 0.1;
+  EXPECT_DOUBLE_EQ(e.relative_residual(), 0.1 / 2.0);
+  e.damping = e.friction = 0.0;
+  e.energy_change = 2.0 + 0.5;
+  EXPECT_DOUBLE_EQ(e.relative_residual(), 0.5 / 10.0);
+}
+
 }  // namespace gearbench

@@ -402,8 +402,7 @@ Herringbone12Result Herringbone12Dynamics::solve() const {
   e.parametric = m.y_end[work + 2] - m.y_record[work + 2] + m.jumps;
   e.impact = m.y_end[work + 3] - m.y_record[work + 3];
   e.energy_change = m.energy_end - m.energy_record;
-  e.residual = (e.energy_change - (e.input - e.output - e.damping - e.friction + e.parametric + e.impact)) /
-               (e.damping + e.friction);
+  e.residual = e.relative_residual();
 
   for (std::size_t h = 0; h < 2; ++h) {
     r.te[h] = statistics(r.transmission_error[h]);

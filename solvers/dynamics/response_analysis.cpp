@@ -39,4 +39,13 @@ void amplitude_spectrum(const std::vector<double>& v, double dt, std::vector<dou
   }
 }
 
+double EnergyBalance::relative_residual() const {
+  const double imbalance = energy_change - (input - output - damping - friction + parametric + impact);
+  double scale = damping + friction;
+  if (!(scale > 0.0))
+    scale = std::max({std::abs(input), std::abs(output), std::abs(parametric), std::abs(impact), std::abs(energy_change)});
+  if (!(scale > 0.0)) return 0.0;  // every term is zero, and so is the imbalance
+  return imbalance / scale;
+}
+
 }  // namespace gearbench::dynamics

@@ -13,7 +13,13 @@ struct ResponseStats {
 /// ΔE = W_in − W_out − D_damping − D_friction + W_parametric + W_impact.
 struct EnergyBalance {
   double input = 0, output = 0, damping = 0, friction = 0, parametric = 0, impact = 0, energy_change = 0;
-  double residual = 0;  ///< (ΔE − right-hand side) / (D_damping + D_friction)
+  double residual = 0;  ///< relative_residual(): (ΔE − right-hand side) over the dissipation
+
+  /// (ΔE − right-hand side) / (D_damping + D_friction). Where nothing is dissipated (no
+  /// damping and no friction, or a load so small that the dissipation underflows) it is taken
+  /// over the largest of the other terms, and it is 0 where every term is 0: the balance then
+  /// holds trivially (issue 20: a torque of 5e-324 N·m once made it 0/0 and exit 1).
+  [[nodiscard]] double relative_residual() const;
 };
 
 [[nodiscard]] ResponseStats statistics(const std::vector<double>& v);

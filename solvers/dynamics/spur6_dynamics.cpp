@@ -321,8 +321,7 @@ Spur6Result Spur6Dynamics::solve() const {
   e.friction = m.y_end[FRICTION] - m.y_record[FRICTION];
   e.parametric = m.y_end[PARAMETRIC] - m.y_record[PARAMETRIC] + m.jumps;
   e.energy_change = m.energy_end - m.energy_record;
-  e.residual = (e.energy_change - (e.input - e.output - e.damping - e.friction + e.parametric)) /
-               (e.damping + e.friction);
+  e.residual = e.relative_residual();
   r.te = statistics(r.transmission_error);
   r.force = statistics(r.mesh_force);
   r.friction = statistics(r.friction_force);

@@ -89,7 +89,10 @@ OperatingPoint read_operating(ObjectReader s) {
   OperatingPoint op;
   op.pinion_speed =
       s.number("pinion_speed_rpm", Range::positive(1e6), "rpm") * 2.0 * std::numbers::pi / 60.0;
-  op.pinion_torque = s.number("pinion_torque_Nm", Range::positive(1e9), "N*m");
+  // At least 1e-6 N·m: the static tooth deflection T/(r_b·k) is then ~1e-14 m or more, well
+  // above what double precision resolves in a rotation times a base radius (~1e-18 m); a
+  // torque of 5e-324 N·m once returned a dynamic factor of 0 (issue 20).
+  op.pinion_torque = s.number("pinion_torque_Nm", Range::closed(1e-6, 1e9), "N*m");
   op.oil_temperature =
       s.optional_number("oil_temperature_C", Range::closed(-60.0, 400.0), "degC").value_or(40.0) +
       273.15;
