@@ -73,7 +73,8 @@ bool render(const Figure& figure, const std::string& terminal, const std::string
     gp << "plot ";
     for (std::size_t i = 0; i < figure.series.size(); ++i)
       gp << (i ? ", " : "") << "$d" << i << (figure.colour_label.empty() ? " using 1:2 with " : " using 1:2:3 with ")
-         << style << (figure.colour_label.empty() ? " lw 2" : "") << " title " << quoted(figure.series[i].label);
+         << (figure.series[i].style.empty() ? style : figure.series[i].style)
+         << (figure.colour_label.empty() ? " lw 2" : "") << " title " << quoted(figure.series[i].label);
     gp << "\n";
   }
   const int status = std::system(fmt::format("{} {} 2>/dev/null", quoted(gnuplot), quoted(script_path)).c_str());

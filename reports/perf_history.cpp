@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <set>
 
 #include "mann_whitney.h"
@@ -79,6 +80,8 @@ PerfRun parse_perf_record(const json& record, const std::string& file, PerfClock
   run.machine = fmt::format("{}, {} cores{}", text_or(m, "cpu_model", "unknown CPU"), m.value("cores", 0u),
                             m.contains("memory_GiB") ? fmt::format(", {} GiB", m["memory_GiB"].dump()) : "");
   run.build_type = g.value("build", json::object()).value("build_type", "unknown");
+  run.status = text_or(g, "status", "ok");
+  if (g.contains("missing") && g["missing"].is_array()) run.missing = g["missing"].get<std::vector<std::string>>();
   for (const auto& b : record["benchmarks"]) {
     if (b.value("run_type", "iteration") != "iteration") continue;  // aggregates are recomputed
     const char* key = clock == PerfClock::cpu ? "cpu_time" : "real_time";
@@ -154,7 +157,68 @@ std::string figure_id(const std::string& prefix, const std::string& name) {
 
 std::string clock_name(PerfClock clock) { return clock == PerfClock::cpu ? "CPU" : "real"; }
 
-std::vector<Figure> history_figures(const std::vector<PerfRun>& runs, PerfClock clock) {
+/// The samples of `name` in `run`: its times, or its solver/baseline ratios.
+std::vector<double> samples_of(const PerfRun& run, const std::string& name, bool ratio) {
+  if (ratio) return run.ratio_samples(name);
+  const auto it = run.seconds.find(name);
+  return it == run.seconds.end() ? std::vector<double>{} : it->second;
+}
+
+/// Per machine the median over the repetitions at each commit, with the fastest and slowest
+/// repetition as the spread; and the commits where a regression of `name` was flagged.
+Figure history_figure(const std::vector<PerfRun>& runs, const std::vector<PerfChange>& changes,
+                      const std::vector<double>& x_of_run, const std::string& name, bool ratio, PerfClock clock) {
+  struct Lines {
+    Series median, fastest, slowest;
+  };
+  std::map<std::string, Lines> by_machine;
+  Series flagged{.label = "regression flagged (U test)", .style = "points pt 6 ps 2.5 lc rgb 'red'"};
+  double largest = 0.0;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const auto samples = samples_of(runs[i], name, ratio);
+    if (samples.empty()) continue;
+    auto [it, first] = by_machine.try_emplace(runs[i].fingerprint);
+    auto& lines = it->second;
+    if (first) {
+      lines.median.label = fmt::format("median, {} [{}] {}", runs[i].machine, runs[i].fingerprint.substr(0, 8),
+                                       runs[i].build_type);
+      lines.fastest = {.label = "fastest repetition", .style = "points pt 2 ps 0.8 lc rgb 'gray40'"};
+      lines.slowest = {.label = "slowest repetition", .style = "points pt 1 ps 0.8 lc rgb 'gray40'"};
+    }
+    const auto [low, high] = std::minmax_element(samples.begin(), samples.end());
+    for (auto* s : {&lines.median, &lines.fastest, &lines.slowest}) s->x.push_back(x_of_run[i]);
+    lines.median.y.push_back(median(samples));
+    lines.fastest.y.push_back(*low);
+    lines.slowest.y.push_back(*high);
+    largest = std::max(largest, *high);
+    const bool regression = std::any_of(changes.begin(), changes.end(), [&](const PerfChange& c) {
+      return c.after == i && c.ratio == ratio && c.name == name && c.verdict == "regression";
+    });
+    if (regression) {
+      flagged.x.push_back(x_of_run[i]);
+      flagged.y.push_back(lines.median.y.back());
+    }
+  }
+  const auto [unit, scale] = ratio ? std::pair<std::string, double>{"-", 1.0} : time_unit(largest);
+  Figure f{.id = figure_id(ratio ? "ratio_" : "time_", name), .section = "Performance history",
+           .title = ratio ? name + " over its baseline" : name,
+           .xlabel = "commit",
+           .ylabel = ratio ? fmt::format("{} time ratio solver/baseline [-]", clock_name(clock))
+                           : fmt::format("{} time per iteration [{}]", clock_name(clock), unit)};
+  for (auto& [fp, lines] : by_machine) {
+    for (auto* s : {&lines.median, &lines.fastest, &lines.slowest}) {
+      for (double& y : s->y) y *= scale;
+      f.series.push_back(std::move(*s));
+    }
+  }
+  for (double& y : flagged.y) y *= scale;
+  if (!flagged.x.empty()) f.series.push_back(std::move(flagged));
+  f.points = true;
+  return f;
+}
+
+std::vector<Figure> history_figures(const std::vector<PerfRun>& runs, const std::vector<PerfChange>& changes,
+                                    PerfClock clock) {
   std::vector<std::string> commits;  // distinct, in order
   std::vector<double> x_of_run;
   for (const auto& r : runs) {
@@ -166,36 +230,10 @@ std::vector<Figure> history_figures(const std::vector<PerfRun>& runs, PerfClock 
     for (const auto& [n, s] : r.seconds) names.insert(n);
     for (const auto& [n, b] : r.baseline_of) ratio_names.insert(n);
   }
-  auto draw = [&](const std::string& name, bool ratio) {
-    std::map<std::string, Series> by_machine;
-    double largest = 0.0;
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-      const auto samples = ratio ? runs[i].ratio_samples(name)
-                                 : (runs[i].seconds.count(name) ? runs[i].seconds.at(name) : std::vector<double>{});
-      if (samples.empty()) continue;
-      auto& s = by_machine[runs[i].fingerprint];
-      s.label = fmt::format("{} [{}] {}", runs[i].machine, runs[i].fingerprint.substr(0, 8), runs[i].build_type);
-      s.x.push_back(x_of_run[i]);
-      s.y.push_back(median(samples));
-      largest = std::max(largest, s.y.back());
-    }
-    const auto [unit, scale] = ratio ? std::pair<std::string, double>{"-", 1.0} : time_unit(largest);
-    Figure f{.id = figure_id(ratio ? "ratio_" : "time_", name), .section = "Performance history",
-             .title = ratio ? name + " over its baseline" : name,
-             .xlabel = "commit",
-             .ylabel = ratio ? fmt::format("median {} time ratio solver/baseline [-]", clock_name(clock))
-                           : fmt::format("median {} time [{}]", clock_name(clock), unit)};
-    for (auto& [fp, s] : by_machine) {
-      for (double& y : s.y) y *= scale;
-      f.series.push_back(std::move(s));
-    }
-    f.xtic_labels = commits;
-    f.points = true;
-    return f;
-  };
   std::vector<Figure> out;
-  for (const auto& n : names) out.push_back(draw(n, false));
-  for (const auto& n : ratio_names) out.push_back(draw(n, true));
+  for (const auto& n : names) out.push_back(history_figure(runs, changes, x_of_run, n, false, clock));
+  for (const auto& n : ratio_names) out.push_back(history_figure(runs, changes, x_of_run, n, true, clock));
+  for (auto& f : out) f.xtic_labels = commits;
   return out;
 }
 
@@ -205,26 +243,37 @@ PerfHistory analyse_perf_history(std::vector<PerfRun> runs, const PerfOptions& o
   options.validate();
   std::stable_sort(runs.begin(), runs.end(), [](const PerfRun& a, const PerfRun& b) { return a.order_key < b.order_key; });
   PerfHistory h;
+  // Each benchmark is compared with the latest earlier run that has it: a commit that did
+  // not build, or lacked the benchmark, is passed over rather than breaking the chain.
   for (std::size_t j = 0; j < runs.size(); ++j) {
     const auto& now = runs[j];
-    const std::size_t same_machine = previous(j, [&](std::size_t i) {
-      return runs[i].fingerprint == now.fingerprint && runs[i].build_type == now.build_type;
-    });
-    if (same_machine != j)
-      for (const auto& [name, samples] : now.seconds)
-        if (const auto it = runs[same_machine].seconds.find(name); it != runs[same_machine].seconds.end())
-          h.changes.push_back(compare_samples(name, false, same_machine, j, it->second, samples, options));
-    const std::size_t any_machine = previous(j, [&](std::size_t i) { return runs[i].build_type == now.build_type; });
-    if (any_machine != j)
-      for (const auto& [name, baseline] : now.baseline_of) {
-        const auto before = runs[any_machine].ratio_samples(name);
-        if (!before.empty())
-          h.changes.push_back(compare_samples(name, true, any_machine, j, before, now.ratio_samples(name), options));
-      }
+    for (const auto& [name, samples] : now.seconds) {
+      const std::size_t i = previous(j, [&](std::size_t k) {
+        return runs[k].fingerprint == now.fingerprint && runs[k].build_type == now.build_type && runs[k].seconds.count(name);
+      });
+      if (i != j) h.changes.push_back(compare_samples(name, false, i, j, runs[i].seconds.at(name), samples, options));
+    }
+    for (const auto& [name, baseline] : now.baseline_of) {
+      const std::size_t i = previous(j, [&](std::size_t k) {
+        return runs[k].build_type == now.build_type && !runs[k].ratio_samples(name).empty();
+      });
+      if (i != j)
+        h.changes.push_back(compare_samples(name, true, i, j, runs[i].ratio_samples(name), now.ratio_samples(name), options));
+    }
   }
-  h.figures = history_figures(runs, options.clock);
+  h.figures = history_figures(runs, h.changes, options.clock);
   h.runs = std::move(runs);
   return h;
+}
+
+std::vector<const PerfChange*> PerfHistory::largest_changes(std::size_t count) const {
+  std::vector<const PerfChange*> out;
+  for (const auto& c : changes)
+    if (c.tested) out.push_back(&c);
+  std::stable_sort(out.begin(), out.end(),
+                   [](const PerfChange* a, const PerfChange* b) { return std::abs(a->change) > std::abs(b->change); });
+  if (out.size() > count) out.resize(count);
+  return out;
 }
 
 std::vector<const PerfChange*> PerfHistory::latest_regressions() const {
@@ -233,8 +282,9 @@ std::vector<const PerfChange*> PerfHistory::latest_regressions() const {
     if (c.verdict != "regression") continue;
     bool newest = true;
     for (std::size_t k = c.after + 1; k < runs.size(); ++k)
-      if (c.ratio ? runs[k].build_type == runs[c.after].build_type
-                  : runs[k].fingerprint == runs[c.after].fingerprint && runs[k].build_type == runs[c.after].build_type)
+      if (c.ratio ? runs[k].build_type == runs[c.after].build_type && !runs[k].ratio_samples(c.name).empty()
+                  : runs[k].fingerprint == runs[c.after].fingerprint && runs[k].build_type == runs[c.after].build_type &&
+                        runs[k].seconds.count(c.name))
         newest = false;
     if (newest) out.push_back(&c);
   }
@@ -254,6 +304,13 @@ std::string describe(const PerfChange& c, const std::vector<PerfRun>& runs) {
                      c.tested ? fmt::format("{:.3g}", c.p_value) : std::string("—"),
                      c.verdict == "regression" ? std::string("**regression**") : c.verdict);
 }
+/// "ok", or why the commit has no times, and the benchmarks its range's other commits ran
+/// and it did not.
+std::string run_status(const PerfRun& run) {
+  std::string text = run.status == "ok" ? "ok" : "**" + run.status + "**";
+  if (!run.missing.empty()) text += fmt::format("; lacks {} benchmark(s): `{}`", run.missing.size(), fmt::join(run.missing, "`, `"));
+  return text;
+}
 constexpr const char* change_header =
     "| benchmark | compared | commits | median | change | p (U test) | verdict |\n|---|---|---|---|---|---|---|\n";
 }  // namespace
@@ -267,17 +324,24 @@ std::string PerfHistory::markdown(const PerfOptions& options) const {
       "repetitions gives p < {} and the median moved by more than {:.0f} %; runs with fewer than {} "
       "repetitions are not tested.\n\n",
       runs.size(), clock_name(options.clock), options.alpha, 100.0 * options.threshold, utest_min_repetitions);
-  md += "| # | commit | record | machine | fingerprint | build |\n|---|---|---|---|---|---|\n";
+  md += "| # | commit | record | machine | fingerprint | build | status |\n|---|---|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < runs.size(); ++i)
-    md += fmt::format("| {} | `{}` | {} | {} | `{}` | {} |\n", i, runs[i].commit_label(),
+    md += fmt::format("| {} | `{}` | {} | {} | `{}` | {} | {} |\n", i, runs[i].commit_label(),
                       fs::path(runs[i].file).filename().string(), runs[i].machine, runs[i].fingerprint,
-                      runs[i].build_type);
+                      runs[i].build_type, run_status(runs[i]));
   const auto latest = latest_regressions();
   md += fmt::format("\n## Regressions at the newest runs: {}\n\n", latest.size());
   if (!latest.empty()) {
     md += change_header;
     for (const auto* c : latest) md += describe(*c, runs);
   }
+  md += "\n## Regressions, each at the commit where it appears\n\n";
+  md += change_header;
+  for (const auto& c : changes)
+    if (c.verdict == "regression") md += describe(c, runs);
+  md += "\n## Largest changes\n\nThe ten tested comparisons whose median moved most, either way.\n\n";
+  md += change_header;
+  for (const auto* c : largest_changes(10)) md += describe(*c, runs);
   md += "\n## Every comparison\n\n";
   md += change_header;
   for (const auto& c : changes) md += describe(c, runs);
@@ -293,7 +357,8 @@ json PerfHistory::to_json(const PerfOptions& options) const {
   j["runs"] = json::array();
   for (const auto& r : runs)
     j["runs"].push_back({{"file", r.file}, {"commit", r.sha}, {"dirty", r.dirty}, {"machine", r.machine},
-                         {"fingerprint", r.fingerprint}, {"build_type", r.build_type}});
+                         {"fingerprint", r.fingerprint}, {"build_type", r.build_type}, {"status", r.status},
+                         {"missing", r.missing}});
   j["changes"] = json::array();
   for (const auto& c : changes) {
     j["changes"].push_back({{"name", c.name}, {"kind", c.ratio ? "ratio" : "time"}, {"before", c.before},

@@ -22,6 +22,8 @@ struct PerfRun {
   std::string fingerprint;  ///< hardware: CPU model, cores, memory
   std::string machine;      ///< human-readable machine description
   std::string build_type;
+  std::string status = "ok";          ///< "build_failed" or "run_failed" for a commit of a range
+  std::vector<std::string> missing;   ///< benchmarks other commits of its range ran and it did not
   /// Time per repetition on the chosen clock [s], by run name ("BM_X/101").
   std::map<std::string, std::vector<double>> seconds;
   /// Solver run -> baseline run measured in the same record.
@@ -60,11 +62,14 @@ struct PerfChange {
 
 struct PerfHistory {
   std::vector<PerfRun> runs;        ///< in commit order
-  std::vector<PerfChange> changes;  ///< every consecutive comparable pair
+  std::vector<PerfChange> changes;  ///< each run against the latest earlier comparable run with the benchmark
   std::vector<Figure> figures;
 
-  /// Regressions whose later run is the newest run of its machine (time) or overall (ratio).
+  /// Regressions whose later run is the newest run with this benchmark of its machine (time)
+  /// or overall (ratio).
   [[nodiscard]] std::vector<const PerfChange*> latest_regressions() const;
+  /// The `count` tested changes of largest size, either way, largest first.
+  [[nodiscard]] std::vector<const PerfChange*> largest_changes(std::size_t count) const;
   [[nodiscard]] std::string markdown(const PerfOptions& options) const;
   [[nodiscard]] nlohmann::json to_json(const PerfOptions& options) const;
 };

@@ -52,6 +52,8 @@ struct Series {
   std::vector<double> x;
   std::vector<double> y;
   std::vector<double> z;  ///< colour value per point (Figure::colour_label set), else empty
+  /// gnuplot style when it differs from the figure's, e.g. marks without lines for a spread.
+  std::string style;
 };
 
 struct Figure {

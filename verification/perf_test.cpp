@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "bench_ratios.h"
+#include "support/perf_support.h"
 #include "mann_whitney.h"
 #include "model/errors.h"
 #include "perf_history.h"
@@ -85,34 +86,6 @@ TEST(MannWhitney, TooFewRepetitionsThrow) {
   EXPECT_THROW(mann_whitney_u({1.0}, {2.0, 3.0}), std::invalid_argument);
 }
 
-/// A `gearbench bench` record: `times` are per-repetition real times in ms.
-json record(const std::string& sha, const std::string& commit_time, const std::string& cpu,
-            const std::map<std::string, std::vector<double>>& times) {
-  json benchmarks = json::array();
-  for (const auto& [name, reps] : times)
-    for (std::size_t i = 0; i < reps.size(); ++i)
-      benchmarks.push_back({{"name", name}, {"run_name", name}, {"run_type", "iteration"},
-                            {"repetitions", reps.size()}, {"repetition_index", i}, {"real_time", reps[i]},
-                            {"cpu_time", reps[i]}, {"time_unit", "ms"}});
-  json ratios = json::object();
-  for (const auto& [name, reps] : times)
-    if (times.count(name + "_baseline")) ratios[name] = {{"baseline", name + "_baseline"}};
-  return {{"benchmarks", benchmarks},
-          {"ratios", ratios},
-          {"gearbench",
-           {{"code", {{"git_sha", sha}, {"dirty", false}, {"commit_time_utc", commit_time}}},
-            {"build", {{"build_type", "Release"}}},
-            {"machine", {{"cpu_model", cpu}, {"cores", 2}, {"memory_GiB", 24}, {"hardware_fingerprint", "fp-" + cpu}}},
-            {"created_utc", "2026-11-22T12:00:00Z"}}}};
-}
-
-/// Ten repetitions around `centre` with a fixed ±1 % spread (deterministic "noise").
-std::vector<double> reps(double centre) {
-  std::vector<double> v;
-  for (int i = 0; i < 10; ++i) v.push_back(centre * (1.0 + 0.002 * ((i * 7) % 10 - 4.5)));
-  return v;
-}
-
 const PerfChange* find_change(const PerfHistory& h, const std::string& name, bool ratio, std::size_t after) {
   for (const auto& c : h.changes)
     if (c.name == name && c.ratio == ratio && c.after == after) return &c;
@@ -167,9 +140,9 @@ TEST(PerfHistory, TimesOnlyOnTheSameMachineRatiosAcross) {
   EXPECT_NEAR(ratio->median_before, 0.5, 1e-12);
   EXPECT_NEAR(ratio->median_after, 0.8, 1e-12);
   EXPECT_EQ(ratio->verdict, "regression");
-  // One figure per benchmark and per ratio, one series per machine, commits on the x axis.
+  // One figure per benchmark and per ratio, its series per machine, commits on the x axis.
   ASSERT_EQ(h.figures.size(), 3u);
-  EXPECT_EQ(h.figures[0].series.size(), 2u);
+  EXPECT_EQ(h.figures[0].series.size(), 6u);  // per machine: median, fastest, slowest
   EXPECT_EQ(h.figures[0].xtic_labels, (std::vector<std::string>{"aaa", "bbb"}));
   const std::string md = h.markdown({});
   EXPECT_NE(md.find("**regression**"), std::string::npos);
@@ -218,17 +191,6 @@ TEST(Provenance, HardwareFingerprintIsStableAndRecorded) {
   const auto p = provenance();
   EXPECT_EQ(p["machine"]["hardware_fingerprint"], hardware_fingerprint());
   EXPECT_GT(p["machine"]["memory_GiB"].get<long>(), 0);
-}
-
-int run_gearbench(const std::string& args, const std::filesystem::path& log) {
-  const std::string command = std::string("'") + GEARBENCH_EXE + "' " + args + " >'" + log.string() + "' 2>&1";
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  return {std::istreambuf_iterator<char>(in), {}};
 }
 
 TEST(PerfCli, ReportPerfFlagsTheNewestRegressionAndWritesFigures) {
