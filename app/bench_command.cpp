@@ -3,22 +3,15 @@
 // side-by-side ratios: a benchmark named X_baseline pairs with X in the same run.
 // With --record the run has repetitions (for the U test of `gearbench report perf`) and
 // lands in reports/perf/<date>_<sha>.json, the performance history of the checkout.
-#include <array>
-#include <chrono>
-#include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <filesystem>
 #include <fmt/format.h>
-#include <fstream>
 #include <iostream>
-#include <map>
-#include <memory>
 #include <unistd.h>
 
+#include "bench_support.h"
 #include "build_info.h"
 #include "commands.h"
-#include "interrupt.h"
 #include "model/errors.h"
 #include "model/json_reader.h"
 #include "perf_history.h"
@@ -30,34 +23,6 @@ namespace gearbench::app {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-namespace {
-/// Commit time of `sha` in the source checkout as "YYYY-MM-DDTHH:MM:SSZ", or "" when git
-/// cannot tell (no git, not a checkout, unknown sha). Orders records by commit, not by
-/// when they were recorded.
-std::string commit_time_utc(const std::string& sha) {
-  if (sha.empty() || sha == "unknown") return "";
-  const std::string command = fmt::format("git -C '{}' log -1 --format=%ct '{}' 2>/dev/null", build::source_dir(), sha);
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(::popen(command.c_str(), "r"), ::pclose);
-  if (!pipe) return "";
-  std::array<char, 64> buffer{};
-  if (!std::fgets(buffer.data(), buffer.size(), pipe.get())) return "";
-  char* end = nullptr;
-  const std::time_t t = std::strtoll(buffer.data(), &end, 10);
-  if (end == buffer.data()) return "";
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  std::array<char, 32> out{};
-  std::strftime(out.data(), out.size(), "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return out.data();
-}
-
-/// out_dir/<stem>.json, or <stem>-2.json, -3, ... when taken: a record is never overwritten.
-fs::path free_path(const fs::path& out_dir, const std::string& stem) {
-  fs::path target = out_dir / (stem + ".json");
-  for (int suffix = 2; fs::exists(target); ++suffix) target = out_dir / fmt::format("{}-{}.json", stem, suffix);
-  return target;
-}
-}  // namespace
 
 void BenchRequest::validate() const {
   if (!(min_time > 0.0)) throw InputError(fmt::format("--min-time = {}: must be > 0 s", min_time));
@@ -94,18 +59,13 @@ int bench_command(const BenchRequest& request) {
   json record = model::read_json_file(raw.string());
   fs::remove(raw);
   record["gearbench"] = reports::provenance();
-  if (const auto t = commit_time_utc(build::git_sha()); !t.empty()) record["gearbench"]["code"]["commit_time_utc"] = t;
+  if (const auto t = commit_time_utc(build::source_dir(), build::git_sha()); !t.empty()) record["gearbench"]["code"]["commit_time_utc"] = t;
   record["gearbench"]["repetitions"] = request.repetitions;
   record["ratios"] = reports::side_by_side_ratios(record["benchmarks"]);
   record["scaling"] = reports::scaling_exponents(record["benchmarks"]);
   const auto name = reports::report_folder_name();
   const auto target = free_path(request.out_dir, request.record ? name : "bench_" + name);
-  {
-    const DeferInterrupts defer;  // the record appears whole or not at all
-    const auto temp = fs::path(target.string() + ".tmp");
-    std::ofstream(temp) << record.dump(2) << "\n";
-    fs::rename(temp, target);
-  }
+  write_record(target, record);
   for (const auto& [run, r] : record["ratios"].items())
     std::cerr << fmt::format("{}: {}{:.3g} x baseline\n", run, r.value("baseline_converged", true) ? "" : "< ",
                              r["ratio"].get<double>());

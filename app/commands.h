@@ -2,6 +2,7 @@
 // The subcommands of the gearbench CLI. Each returns the process exit code.
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace gearbench::app {
 
@@ -35,6 +36,25 @@ struct BenchRequest {
   void validate() const;    ///< InputError when out of range
 };
 int bench_command(const BenchRequest& request);
+
+/// `gearbench bench --commits`: a performance history of past commits, each built in its
+/// own git worktree by `build_script`, one record per commit.
+struct BenchRangeRequest {
+  std::vector<std::string> commits;  ///< "A..B" (git's range: after A up to B) or one commit each
+  int every = 1;                     ///< every K-th commit of a range, counted from its newest
+  std::string set = "short";         ///< named benchmark set (reports::benchmark_set_filter)
+  std::string filter;                ///< a regular expression instead of the set
+  int repetitions = 5;
+  double min_time = 0.2;
+  std::string out_dir;               ///< where the records go (reports/perf)
+  std::string repo;                  ///< the git checkout whose commits are built
+  std::string workdir;               ///< the worktrees and their builds
+  std::string build_script;          ///< `SCRIPT SHA WORKDIR` prints the benchmark executable;
+                                     ///< `SCRIPT --clean WORKDIR` removes the builds
+  bool keep_worktrees = false;
+  void validate() const;             ///< InputError when out of range
+};
+int bench_range_command(const BenchRangeRequest& request);
 
 /// `gearbench report perf`: the performance history of the records in `dir`.
 struct PerfReportRequest {

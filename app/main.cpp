@@ -96,7 +96,26 @@ int main(int argc, char** argv) {
   bench->add_flag("--record", record_run,
                   "a performance-history record: repetitions, into reports/perf/<date>_<sha>.json");
   auto* repetitions_option = bench->add_option("--repetitions", repetitions,
-                                               "repetitions of every benchmark (default 10 with --record, else 1)");
+                                               "repetitions of every benchmark (default 10 with --record, 5 with "
+                                               "--commits, else 1)");
+  BenchRangeRequest range{.repo = gearbench::build::source_dir(),
+                          .workdir = std::string(gearbench::build::source_dir()) + "/build/perf-worktrees",
+                          .build_script = std::string(gearbench::build::source_dir()) + "/scripts/build-commit"};
+  auto* commits_option = bench->add_option("--commits", range.commits,
+                                           "benchmark past commits: a range A..B and/or single commits, each "
+                                           "built in its own worktree, one record each in reports/perf");
+  bench->add_option("--every", range.every, "with --commits: every K-th commit of a range (its newest always)")
+      ->capture_default_str();
+  bench->add_option("--set", range.set, "with --commits: benchmark set short (< 2 min) or full, unless --filter")
+      ->check(CLI::IsMember({"short", "full"}))->capture_default_str();
+  bench->add_option("--repo", range.repo, "with --commits: the git checkout whose commits are built")
+      ->capture_default_str();
+  bench->add_option("--workdir", range.workdir, "with --commits: folder of the worktrees and their builds")
+      ->capture_default_str();
+  bench->add_option("--build-script", range.build_script,
+                    "with --commits: `SCRIPT SHA WORKDIR` builds SHA and prints its benchmark executable")
+      ->capture_default_str();
+  bench->add_flag("--keep-worktrees", range.keep_worktrees, "with --commits: keep the worktrees and builds");
 
   std::string sweep_path, sweep_out;
   bool sweep_pdf = false;
@@ -119,6 +138,13 @@ int main(int argc, char** argv) {
     if (*perf) return report_perf_command(perf_request);
     if (*pdf) return report_pdf_command(pdf_report);
     if (*sweep) return sweep_command(sweep_path, sweep_out, sweep_pdf);
+    if (*bench && commits_option->count()) {
+      range.out_dir = bench->count("--out") ? bench_out : default_perf_dir();
+      range.filter = filter;
+      range.min_time = min_time;
+      if (repetitions_option->count()) range.repetitions = repetitions;
+      return bench_range_command(range);
+    }
     if (*bench) {
       const bool out_given = bench->count("--out") > 0;
       return bench_command({.out_dir = record_run && !out_given ? default_perf_dir() : bench_out,
