@@ -16,6 +16,20 @@ namespace gearbench::app {
 std::string default_output_dir() { return std::string(build::source_dir()) + "/reports/out"; }
 std::string default_cases_dir() { return std::string(build::source_dir()) + "/cases"; }
 
+namespace {
+/// The report's Performance section: the --bench record, else this commit's newest record in
+/// reports/perf, against the previous record of this machine there.
+reports::Note performance_note(const std::string& bench_record) {
+  const auto dir = default_perf_dir();
+  const auto history = std::filesystem::is_directory(dir) ? reports::load_perf_records(dir) : std::vector<reports::PerfRun>{};
+  std::optional<reports::PerfRun> current;
+  if (!bench_record.empty()) current = reports::parse_perf_record(model::read_json_file(bench_record), bench_record);
+  return reports::performance_note(history, current,
+                                   {.sha = build::git_sha(), .fingerprint = reports::hardware_fingerprint(),
+                                    .build_type = build::build_type()});
+}
+}  // namespace
+
 int verify_command(const std::string& tier, const std::string& out_dir, const std::string& cases_dir,
                    const std::string& bench_record, const std::string& only) {
   const auto parsed = verification::parse_tier(tier);
@@ -25,6 +39,7 @@ int verify_command(const std::string& tier, const std::string& out_dir, const st
   auto report = verification::run_verification(
       parsed, context, [](const std::string& line) { std::cerr << line << std::endl; }, only);
   if (!bench_record.empty()) report.notes.push_back(reports::benchmark_note(model::read_json_file(bench_record)));
+  report.notes.push_back(performance_note(bench_record));
   // The report folder appears whole and its path is printed, or neither: a Ctrl-C before this
   // point leaves nothing; one after it comes when the work is done, and the run finishes.
   hold_interrupts_to_the_end();

@@ -1,5 +1,6 @@
 #include "bench_section.h"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <set>
 #include <string>
@@ -45,6 +46,51 @@ Note benchmark_note(const nlohmann::json& record) {
                           s["points"].get<int>(), s["nodes_min"].get<double>(), s["nodes_max"].get<double>());
   }
   return {"Benchmarks", text};
+}
+
+namespace {
+/// The newest run (in commit order) of `runs` for which `pick` holds.
+template <class Pred>
+std::optional<PerfRun> newest(std::vector<PerfRun> runs, Pred pick) {
+  std::stable_sort(runs.begin(), runs.end(), [](const PerfRun& a, const PerfRun& b) { return a.order_key < b.order_key; });
+  for (auto it = runs.rbegin(); it != runs.rend(); ++it)
+    if (pick(*it)) return *it;
+  return std::nullopt;
+}
+}  // namespace
+
+Note performance_note(const std::vector<PerfRun>& history, const std::optional<PerfRun>& current,
+                      const PerformanceQuery& query, const PerfOptions& options) {
+  const auto same_machine = [&](const PerfRun& r) {
+    return r.fingerprint == query.fingerprint && r.build_type == query.build_type && r.status == "ok";
+  };
+  const auto now = current ? current : newest(history, [&](const PerfRun& r) { return same_machine(r) && r.sha == query.sha; });
+  if (!now)
+    return {"Performance", fmt::format("No benchmark record of commit `{}` on this machine (`{}`, {} build): run "
+                                       "`gearbench bench --record` (or pass `verify --bench RECORD`) to compare it "
+                                       "with the previous record.\n",
+                                       query.sha, query.fingerprint, query.build_type)};
+  const auto before = newest(history, [&](const PerfRun& r) {
+    return same_machine(r) && r.sha != now->sha && r.order_key < now->order_key;
+  });
+  if (!before)
+    return {"Performance", fmt::format("Record {} of commit `{}` has no earlier record on the same machine (`{}`) and "
+                                       "build type to compare with.\n",
+                                       now->file, now->commit_label(), query.fingerprint)};
+  const auto pair = analyse_perf_history({*before, *now}, options);
+  std::string text = fmt::format(
+      "This commit's benchmarks (`{}`, {}) against the previous record on the same machine (`{}`, {}), {}. A change "
+      "is flagged when the two-sided Mann–Whitney U test over the repetitions gives p < {} and the median moved by "
+      "more than {:.0f} %.\n\n| benchmark | compared | median before | median now | change | p | verdict |\n"
+      "|---|---|---|---|---|---|---|\n",
+      now->commit_label(), now->file, before->commit_label(), before->file, now->machine, options.alpha,
+      100.0 * options.threshold);
+  for (const auto& c : pair.changes)
+    text += fmt::format("| `{}` | {} | {:.4g} | {:.4g} | {:+.1f} % | {} | {} |\n", c.name, c.ratio ? "ratio" : "time [s]",
+                        c.median_before, c.median_after, 100.0 * c.change,
+                        c.tested ? fmt::format("{:.3g}", c.p_value) : std::string("—"),
+                        c.verdict == "regression" ? std::string("**regression**") : c.verdict);
+  return {"Performance", text};
 }
 
 }  // namespace gearbench::reports
