@@ -23,7 +23,6 @@ namespace gearbench::app {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-
 void BenchRequest::validate() const {
   if (!(min_time > 0.0)) throw InputError(fmt::format("--min-time = {}: must be > 0 s", min_time));
   if (repetitions < 1 || repetitions > 1000)
@@ -59,7 +58,8 @@ int bench_command(const BenchRequest& request) {
   json record = model::read_json_file(raw.string());
   fs::remove(raw);
   record["gearbench"] = reports::provenance();
-  if (const auto t = commit_time_utc(build::source_dir(), build::git_sha()); !t.empty()) record["gearbench"]["code"]["commit_time_utc"] = t;
+  if (const auto t = commit_time_utc(build::source_dir(), build::git_sha()); !t.empty())
+    record["gearbench"]["code"]["commit_time_utc"] = t;
   record["gearbench"]["repetitions"] = request.repetitions;
   record["ratios"] = reports::side_by_side_ratios(record["benchmarks"]);
   record["scaling"] = reports::scaling_exponents(record["benchmarks"]);
