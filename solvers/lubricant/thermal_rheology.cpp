@@ -2,20 +2,17 @@
 
 #include <cmath>
 #include <fmt/format.h>
+#include <stdexcept>
 
 #include "model/errors.h"
 #include "rheology.h"
+#include "viscosity_temperature.h"
 
 namespace gearbench::lubricant {
 
 namespace {
-constexpr double celsius_zero = 273.15;      // [K]
-constexpr double iso_density_slope = 0.7;    // [kg/(m³·K)], ISO/TR 15144-1 (seed 001 eq. 1.3)
-constexpr double walther_offset = 0.7;       // [mm²/s], ASTM D341 / Ubbelohde–Walther
 constexpr double roelands_temperature = 138.0;  // [K], Roelands (1966) temperature pole
 constexpr double T40 = celsius_zero + 40.0, T100 = celsius_zero + 100.0;
-
-double lglg(double nu_mm2_s) { return std::log10(std::log10(nu_mm2_s + walther_offset)); }
 
 void require_positive(double value, const char* key) {
   if (!(value > 0.0) || !std::isfinite(value))
@@ -33,8 +30,7 @@ ThermalRheology::ThermalRheology(const model::ThermalLubricant& data, double inl
   require_positive(data.pressure_viscosity, "lubricant.pressure_viscosity_1_per_GPa");
   require_positive(data.thermal_conductivity, "lubricant.thermal_conductivity_W_per_mK");
   require_positive(data.specific_heat, "lubricant.specific_heat_J_per_kgK");
-  walther_ = data.nu40.has_value() || data.nu100.has_value();
-  if (walther_) {
+  if (data.nu40.has_value() || data.nu100.has_value()) {
     if (!data.nu40 || !data.nu100)
       throw InputError("lubricant: give both nu40_mm2_s and nu100_mm2_s for the Ubbelohde–Walther law");
     require_positive(*data.nu40, "lubricant.nu40_mm2_s");
@@ -42,9 +38,7 @@ ThermalRheology::ThermalRheology(const model::ThermalLubricant& data, double inl
     if (!(*data.nu40 > *data.nu100))
       throw InputError(fmt::format("lubricant.nu100_mm2_s = {} must be below nu40_mm2_s = {}",
                                    *data.nu100 * 1e6, *data.nu40 * 1e6));
-    // lg lg(ν + 0.7) = A·lg T + B through (313.15 K, ν40) and (373.15 K, ν100).
-    walther_A_ = (lglg(*data.nu40 * 1e6) - lglg(*data.nu100 * 1e6)) / (std::log10(T40) - std::log10(T100));
-    walther_B_ = lglg(*data.nu40 * 1e6) - walther_A_ * std::log10(T40);
+    walther_.emplace(T40, *data.nu40 * 1e6, T100, *data.nu100 * 1e6);
     eta0_ = ambient_density(T0_) * walther_kinematic_viscosity(T0_);
   } else {
     require_positive(data.viscosity, "lubricant.viscosity_Pa_s");
@@ -62,13 +56,11 @@ ThermalRheology::ThermalRheology(const model::ThermalLubricant& data, double inl
 }
 
 double ThermalRheology::walther_kinematic_viscosity(double T) const {
-  const double nu_mm2_s = std::pow(10.0, std::pow(10.0, walther_A_ * std::log10(T) + walther_B_)) - walther_offset;
-  return nu_mm2_s * 1e-6;
+  if (!walther_) throw std::logic_error("ThermalRheology: the Roelands form has no Ubbelohde–Walther line");
+  return walther_->kinematic_viscosity_mm2_s(T) * 1e-6;
 }
 
-double ThermalRheology::ambient_density(double T) const {
-  return data_.density_15C - iso_density_slope * (T - (celsius_zero + 15.0));
-}
+double ThermalRheology::ambient_density(double T) const { return iso15144_density(data_.density_15C, T); }
 
 double ThermalRheology::ambient_viscosity(double T) const {
   return ambient_density(T) * walther_kinematic_viscosity(T);
@@ -90,7 +82,7 @@ double ThermalRheology::density(double p, double T) const {
 }
 
 double ThermalRheology::thermal_expansion(double /*p*/, double T) const {
-  return -iso_density_slope / ambient_density(T);
+  return -iso15144_density_slope / ambient_density(T);
 }
 
 }  // namespace gearbench::lubricant

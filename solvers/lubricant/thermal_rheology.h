@@ -13,7 +13,10 @@
 //    temperature-independent z (Roelands 1966 found z nearly independent of temperature).
 // Density: the linear law of ISO/TR 15144-1 (seed 001 eq. 1.3), ρ(T) = ρ15 − 0.7·(T − 15 °C)
 // [kg/m³], times the Dowson–Higginson pressure factor (5.9e8 + 1.34p)/(5.9e8 + p).
+#include <optional>
+
 #include "model/materials.h"
+#include "viscosity_temperature.h"
 
 namespace gearbench::lubricant {
 
@@ -32,7 +35,7 @@ class ThermalRheology {
   [[nodiscard]] const model::ThermalLubricant& data() const { return data_; }
   [[nodiscard]] double inlet_temperature() const { return T0_; }
 
-  /// Kinematic viscosity by Ubbelohde–Walther [m²/s] (Walther form only).
+  /// Kinematic viscosity by Ubbelohde–Walther [m²/s] (Walther form only: throws otherwise).
   [[nodiscard]] double walther_kinematic_viscosity(double T) const;
 
  private:
@@ -41,8 +44,7 @@ class ThermalRheology {
 
   model::ThermalLubricant data_;
   double T0_ = 0.0;
-  bool walther_ = false;
-  double walther_A_ = 0.0, walther_B_ = 0.0;
+  std::optional<WaltherLine> walther_;  ///< set for the Ubbelohde–Walther form
   double eta0_ = 0.0, z_ = 0.0, S0_ = 0.0;
 };
 
