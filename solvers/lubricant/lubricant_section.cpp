@@ -1,0 +1,187 @@
+#include "lubricant_section.h"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <functional>
+#include <vector>
+
+#include "catalogue.h"
+#include "model/errors.h"
+#include "model/json_reader.h"
+#include "rheology.h"
+#include "viscosity_temperature.h"
+
+namespace gearbench::lubricant {
+namespace {
+
+using nlohmann::json;
+
+/// One key a form writes and where its value comes from in an OilState (in the key's unit).
+struct FormKey {
+  const char* key;
+  std::function<std::optional<Sourced>(const OilState&)> value;
+  bool required = false;
+};
+
+std::vector<FormKey> form_keys(SectionForm form) {
+  const auto eta = [](const OilState& s) { return s.viscosity; };
+  const auto alpha = [](const OilState& s) { return s.pressure_viscosity; };
+  const auto z = [](const OilState& s) { return s.roelands_z; };
+  const auto nu40 = [](const OilState& s) { return s.nu40; };
+  const auto nu100 = [](const OilState& s) { return s.nu100; };
+  const auto k = [](const OilState& s) { return s.thermal_conductivity; };
+  const auto c = [](const OilState& s) { return s.specific_heat; };
+  const auto rho15 = [](const OilState& s) { return s.density_15C; };
+  switch (form) {
+    case SectionForm::ehl_line:
+      return {{"viscosity_Pa_s", eta, true}, {"pressure_viscosity_1_per_GPa", alpha, true},
+              {"roelands_z", z}};
+    case SectionForm::thermal:
+      return {{"nu40_mm2_s", nu40, true}, {"nu100_mm2_s", nu100, true},
+              {"density_kg_m3", rho15, true}, {"pressure_viscosity_1_per_GPa", alpha, true},
+              {"thermal_conductivity_W_per_mK", k, true}, {"specific_heat_J_per_kgK", c, true}};
+    case SectionForm::micropitting_oil:
+      return {{"nu40_mm2_s", nu40, true}, {"nu100_mm2_s", nu100, true},
+              {"density_15C_kg_m3", rho15, true}};
+    case SectionForm::gear: break;
+  }
+  return {{"viscosity_Pa_s", eta, true}, {"pressure_viscosity_1_per_GPa", alpha, true},
+          {"roelands_z", z}, {"density_kg_m3", [](const OilState& s) { return s.density; }},
+          {"nu40_mm2_s", nu40}, {"nu100_mm2_s", nu100}, {"thermal_conductivity_W_per_mK", k},
+          {"specific_heat_J_per_kgK", c}};
+}
+
+/// The keys of the library in a section (removed before the kind's reader sees it).
+constexpr const char* library_keys[] = {"name", "grade", "base", "viscosity_index", "temperature_C"};
+
+/// The oil the section names: by "name", or by "grade" + "base" (+ "nu100_mm2_s").
+OilData named_oil(const json& section, const std::string& path, const Catalogue& catalogue) {
+  model::ObjectReader r(section, path);
+  if (r.has("viscosity_index"))
+    throw InputError(fmt::format("{}.viscosity_index = {}: not supported: the catalogue has no ISO 2909 viscosity-index "
+                                 "tables to find nu100 from; give nu100_mm2_s", path,
+                                 model::shown_value(section.at("viscosity_index"))));
+  if (r.has("name")) {
+    if (r.has("grade") || r.has("base"))
+      throw InputError(fmt::format("{}.name: give either \"name\" or \"grade\" with \"base\", not both", path));
+    auto oil = catalogue.find(r.string("name"), r.key_path("name"));
+    Catalogue::require_data(oil, r.key_path("name"));
+    return oil;
+  }
+  const int grade = r.integer("grade", 1, 100000);
+  const auto base = parse_base_oil(r.string("base"), r.key_path("base"));
+  const auto nu100 = r.optional_number("nu100_mm2_s", model::Range::positive(1e6), "mm2/s");
+  auto oil = catalogue.grade(grade, base, nu100, r.key_path("grade"));
+  Catalogue::require_data(oil, r.key_path("grade"));
+  return oil;
+}
+
+/// The section's own "temperature_C" or the case's temperature (one of them, never both).
+std::optional<CaseTemperature> section_temperature(const json& section, const std::string& path,
+                                                   const std::optional<CaseTemperature>& case_temperature) {
+  if (!section.contains("temperature_C")) return case_temperature;
+  if (case_temperature)
+    throw InputError(fmt::format("{}.temperature_C: the case gives its temperature in {}: give it once", path,
+                                 case_temperature->key));
+  model::ObjectReader r(section, path);
+  const double theta = r.number("temperature_C", model::Range::closed(-273.15, 1e4), "degC");
+  return CaseTemperature{path + ".temperature_C", theta + celsius_zero};
+}
+
+/// The state of a two-point oil for the micropitting form, which needs no temperature.
+OilState temperature_free_state(const OilData& oil, const std::string& path) {
+  if (oil.at_temperature || !oil.base)
+    throw InputError(fmt::format("{}.name = '{}': ISO/TR 15144-1 needs a base oil with nu40 and nu100; this oil is "
+                                 "given at one temperature only", path, oil.name));
+  if (*oil.base == BaseOil::ester)
+    throw InputError(fmt::format("{}.name = '{}': ISO/TR 15144-1 has pressure-viscosity formulas for mineral, PAO and "
+                                 "PAG oils only", path, oil.name));
+  OilState s;
+  s.name = oil.name;
+  s.base = oil.base;
+  s.nu40 = oil.nu40;
+  s.nu100 = oil.nu100;
+  s.density_15C = oil.density_15C;
+  return s;
+}
+
+std::string iso15144_base(BaseOil base) {
+  switch (base) {
+    case BaseOil::pao: return "polyalphaolefin";
+    case BaseOil::pag: return "polyglycol";
+    default: return "mineral";
+  }
+}
+
+/// Source texts of every catalogue source named in the echo's sources.
+json source_texts(const json& sources, const Catalogue& catalogue) {
+  json texts = json::object();
+  for (const auto& [key, text] : catalogue.sources().items())
+    for (const auto& s : sources)
+      if (s.get<std::string>().find(key) != std::string::npos) texts[key] = text;
+  return texts;
+}
+
+}  // namespace
+
+bool names_oil(const json& section) {
+  return section.is_object() && (section.contains("name") || section.contains("grade"));
+}
+
+ResolvedSection resolve_section(const json& section, const std::string& path, SectionForm form,
+                                const std::optional<CaseTemperature>& case_temperature) {
+  const auto& catalogue = Catalogue::builtin();
+  const OilData oil = named_oil(section, path, catalogue);
+  OilState state;
+  json echo = {{"name", oil.name}};
+  if (form == SectionForm::micropitting_oil) {
+    state = temperature_free_state(oil, path);
+  } else {
+    const auto T = section_temperature(section, path, case_temperature);
+    if (!T)
+      throw InputError(fmt::format("{}.temperature_C: missing: a named oil needs a temperature (the case's operating "
+                                   "or inlet temperature, or {}.temperature_C)", path, path));
+    state = catalogue.at(oil, T->value, T->key);
+    echo["temperature_C"] = std::round((T->value - celsius_zero) * 1e9) / 1e9;  // no 89.85000000000002
+    echo["temperature_from"] = T->key;
+  }
+  json out = section;
+  for (const char* key : library_keys) out.erase(key);
+  json values = json::object(), sources = json::object(), explicit_keys = json::array();
+  for (const auto& k : form_keys(form)) {
+    if (section.contains(k.key)) {
+      explicit_keys.push_back(k.key);
+      sources[k.key] = "case";
+    } else if (const auto v = k.value(state)) {
+      out[k.key] = v->value;
+      sources[k.key] = v->source;
+    } else if (k.required) {
+      throw InputError(fmt::format("{}.{}: missing: the catalogue has no sourced value for '{}'{}; give it", path, k.key,
+                                   oil.name, state.base == BaseOil::ester && std::string(k.key).find("pressure") == 0
+                                                 ? " (ISO/TR 15144-1 gives no pressure-viscosity formula for esters)" : ""));
+    }
+    if (out.contains(k.key)) values[k.key] = out[k.key];
+  }
+  // z follows η and α: recomputed when either was given by the case (z = α·p0/(ln η0 + 9.67)).
+  const bool has_z = form == SectionForm::gear || form == SectionForm::ehl_line;
+  if (has_z && !section.contains("roelands_z") &&
+      (section.contains("viscosity_Pa_s") || section.contains("pressure_viscosity_1_per_GPa"))) {
+    out["roelands_z"] = roelands_z_from_alpha(out.at("viscosity_Pa_s").get<double>(),
+                                              out.at("pressure_viscosity_1_per_GPa").get<double>() * 1e-9);
+    values["roelands_z"] = out["roelands_z"];
+    sources["roelands_z"] = "roelands_z_from_alpha(case)";
+  }
+  if (form == SectionForm::micropitting_oil) {
+    out["base"] = iso15144_base(*state.base);
+    values["base"] = out["base"];
+  }
+  if (state.base) echo["base"] = base_oil_name(*state.base);
+  echo["values"] = values;
+  echo["sources"] = sources;
+  echo["explicit"] = explicit_keys;
+  echo["source_texts"] = source_texts(sources, catalogue);
+  if (!state.warnings.empty()) echo["warnings"] = state.warnings;
+  return {out, echo};
+}
+
+}  // namespace gearbench::lubricant
