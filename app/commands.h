@@ -1,5 +1,6 @@
 #pragma once
 // The subcommands of the gearbench CLI. Each returns the process exit code.
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -73,6 +74,10 @@ int report_pdf_command(const std::string& report_dir);
 /// `gearbench sweep SWEEP.json`: a grid of cases through the kind registry, over MPI ranks
 /// when started with mpirun.
 int sweep_command(const std::string& sweep_path, const std::string& out_dir, bool pdf);
+
+/// `gearbench lubricants [NAME --temperature-C T]`: the catalogue, or one oil's properties
+/// at T with their sources.
+int lubricants_command(const std::string& name, std::optional<double> temperature_C);
 
 /// Where `bench --record` writes and `report perf` reads: the checkout's reports/perf.
 std::string default_perf_dir();

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "model/errors.h"
+#include "lubricant_resolution.h"
 #include "model/json_reader.h"
 
 namespace gearbench::app {
@@ -44,7 +45,10 @@ nlohmann::json run_case(const nlohmann::json& case_json) {
   if (it == case_json.end()) throw InputError("kind: missing required key");
   if (!it->is_string())
     throw InputError(fmt::format("kind = {}: must be a string", model::shown_value(*it)));
-  auto result = KindRegistry::instance().find(it->get<std::string>()).run(case_json);
+  const auto& kind = KindRegistry::instance().find(it->get<std::string>());
+  nlohmann::json lubricants;
+  auto result = kind.run(resolve_named_lubricants(case_json, lubricants));
+  if (!lubricants.empty() && result.is_object()) result["lubricant_resolved"] = lubricants;
   ensure_finite(result);
   return result;
 }

@@ -124,6 +124,12 @@ int main(int argc, char** argv) {
   sweep->add_option("--out", sweep_out, "output folder (default reports/out/sweep/<sweep name>)");
   sweep->add_flag("--pdf", sweep_pdf, "also draw the figures as PDF");
 
+  std::string oil_name;
+  double oil_temperature_C = 0.0;
+  auto* lubricants = cli.add_subcommand("lubricants", "list the lubricant catalogue, or resolve one oil at a temperature");
+  lubricants->add_option("NAME", oil_name, "oil name, e.g. \"ISO VG 320 mineral\"");
+  auto* oil_temperature = lubricants->add_option("--temperature-C", oil_temperature_C, "temperature [degC]");
+
   install_interrupt_handler();
   try {
     cli.parse(argc, argv);
@@ -145,6 +151,8 @@ int main(int argc, char** argv) {
       if (repetitions_option->count()) range.repetitions = repetitions;
       return bench_range_command(range);
     }
+    if (*lubricants)
+      return lubricants_command(oil_name, oil_temperature->count() ? std::optional(oil_temperature_C) : std::nullopt);
     if (*bench) {
       const bool out_given = bench->count("--out") > 0;
       return bench_command({.out_dir = record_run && !out_given ? default_perf_dir() : bench_out,
