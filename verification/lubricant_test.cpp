@@ -1,0 +1,147 @@
+// Unit tests of the lubricant catalogue (solvers/lubricant/catalogue.h, lubricant_section.h):
+// the laws pass through their data, names and ranges are checked, explicit keys win, and a
+// seed oil named from the catalogue gives exactly the numbers its case typed.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "lubricant/catalogue.h"
+#include "lubricant/lubricant_section.h"
+#include "lubricant/rheology.h"
+#include "lubricant/viscosity_temperature.h"
+#include "model/errors.h"
+#include "model/json_reader.h"
+
+namespace gearbench::lubricant {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kelvin(double celsius) { return celsius + celsius_zero; }
+const Catalogue& cat() { return Catalogue::builtin(); }
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// ASTM D341's line through two points returns them (to rounding of lg lg).
+TEST(Lubricant, WaltherLinePassesThroughItsPoints) {
+  const WaltherLine line(kelvin(40), 320.0, kelvin(100), 22.23);
+  EXPECT_NEAR(line.kinematic_viscosity_mm2_s(kelvin(40)) / 320.0, 1.0, 1e-12);
+  EXPECT_NEAR(line.kinematic_viscosity_mm2_s(kelvin(100)) / 22.23, 1.0, 1e-12);
+  EXPECT_LT(line.slope(), 0.0);  // viscosity falls with temperature
+}
+
+TEST(Lubricant, IsoDensityLaw) {
+  EXPECT_DOUBLE_EQ(iso15144_density(900.0, kelvin(15)), 900.0);
+  EXPECT_NEAR(iso15144_density(900.0, kelvin(115)), 830.0, 1e-9);  // 0.7 kg/m³ per K
+}
+
+TEST(Lubricant, EveryIsoGradeOfEveryBaseIsNamedOnce) {
+  const auto names = cat().names();
+  std::set<std::string> lower;
+  for (auto n : names) {
+    std::transform(n.begin(), n.end(), n.begin(), ::tolower);
+    EXPECT_TRUE(lower.insert(n).second) << "duplicate " << n;
+  }
+  const std::vector<int> iso3448 = {2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460, 680, 1000, 1500};
+  EXPECT_EQ(cat().grades(), iso3448);
+  for (const auto base : {BaseOil::mineral, BaseOil::pao, BaseOil::ester, BaseOil::pag})
+    for (const int g : iso3448) EXPECT_EQ(cat().find(grade_name(g, base), "k").name, grade_name(g, base));
+}
+
+// A grade's ν40 is its ISO 3448 midpoint, whatever the source of ν100.
+TEST(Lubricant, GradeViscosityAt40IsTheMidpoint) {
+  const auto oil = cat().find("iso vg 320 MINERAL", "k");
+  const auto s = cat().at(oil, kelvin(40), "T");
+  EXPECT_NEAR(s.kinematic_viscosity->value / 320.0, 1.0, 1e-12);
+  EXPECT_NEAR(s.viscosity->value / (s.density->value * 320e-6), 1.0, 1e-12);  // η = ρ·ν
+  EXPECT_TRUE(s.warnings.empty());
+}
+
+// z from α and η as rheology.h defines it; α of ISO/TR 15144-1 falls with temperature.
+TEST(Lubricant, RoelandsZFollowsAlpha) {
+  const auto oil = cat().find("ISO VG 150 PAO", "k");
+  const auto a = cat().at(oil, kelvin(60), "T"), b = cat().at(oil, kelvin(90), "T");
+  EXPECT_DOUBLE_EQ(a.roelands_z->value, roelands_z_from_alpha(a.viscosity->value, a.pressure_viscosity->value * 1e-9));
+  EXPECT_GT(a.pressure_viscosity->value, b.pressure_viscosity->value);
+}
+
+TEST(Lubricant, UnknownNameSuggestsTheNearest) {
+  const auto e = error_of([] { (void)cat().find("ISO VG 330 minral", "lubricant.name"); });
+  EXPECT_NE(e.find("lubricant.name = \"ISO VG 330 minral\""), std::string::npos) << e;
+  EXPECT_NE(e.find("ISO VG 320 mineral"), std::string::npos) << e;
+}
+
+TEST(Lubricant, OutOfRangeIsAnErrorAndExtrapolationAWarning) {
+  const auto oil = cat().find("FVA 3", "k");
+  EXPECT_NE(error_of([&] { (void)cat().at(oil, kelvin(151), "operating.oil_temperature_C"); })
+                .find("operating.oil_temperature_C = 151: allowed range is [-20, 150]"), std::string::npos);
+  EXPECT_EQ(cat().at(oil, kelvin(120), "T").warnings.size(), 1u);
+  // ν below 2 mm²/s: ISO VG 2 at 150 °C
+  EXPECT_NE(error_of([&] { (void)cat().at(cat().grade(2, BaseOil::mineral, 1.0, "g"), kelvin(150), "T"); })
+                .find("below the 2 mm2/s"), std::string::npos);
+  // a one-temperature oil elsewhere
+  EXPECT_NE(error_of([&] { (void)cat().at(cat().find("seed 004 oil", "k"), kelvin(60), "T"); })
+                .find("given at 39.85 degC only"), std::string::npos);
+  EXPECT_NE(error_of([] { (void)cat().grade(330, BaseOil::mineral, std::nullopt, "lubricant.grade"); })
+                .find("lubricant.grade = 330: not an ISO 3448 grade"), std::string::npos);
+}
+
+ResolvedSection resolve(const json& section, SectionForm form = SectionForm::gear, double celsius = 80.0) {
+  return resolve_section(section, "lubricant", form, CaseTemperature{"operating.oil_temperature_C", kelvin(celsius)});
+}
+
+TEST(Lubricant, SectionErrorsNameTheKey) {
+  EXPECT_NE(error_of([] { (void)resolve({{"name", "ISO VG 1000 mineral"}}); })
+                .find("lubricant.name = \"ISO VG 1000 mineral\": the catalogue has no sourced nu100"), std::string::npos);
+  EXPECT_NE(error_of([] { (void)resolve({{"grade", 320}, {"base", "mineral"}, {"viscosity_index", 95}}); })
+                .find("lubricant.viscosity_index = 95: not supported"), std::string::npos);
+  EXPECT_NE(error_of([] { (void)resolve({{"name", "ISO VG 320 ester"}}); })
+                .find("lubricant.pressure_viscosity_1_per_GPa: missing"), std::string::npos);
+  EXPECT_NE(error_of([] { (void)resolve({{"name", "FVA 3"}, {"temperature_C", 50}}); }).find("give it once"),
+            std::string::npos);
+  EXPECT_NE(error_of([] { (void)resolve({{"grade", 320}, {"base", "olive"}}); })
+                .find("lubricant.base = \"olive\": allowed values are mineral, pao, ester, pag"), std::string::npos);
+}
+
+// Explicit keys win; z then follows the explicit η.
+TEST(Lubricant, ExplicitKeysOverrideTheCatalogue) {
+  const auto r = resolve({{"name", "ISO VG 320 mineral"}, {"viscosity_Pa_s", 0.1}});
+  EXPECT_EQ(r.section.at("viscosity_Pa_s").get<double>(), 0.1);
+  EXPECT_EQ(r.echo.at("explicit"), json::array({"viscosity_Pa_s"}));
+  EXPECT_DOUBLE_EQ(r.section.at("roelands_z").get<double>(),
+                   roelands_z_from_alpha(0.1, r.section.at("pressure_viscosity_1_per_GPa").get<double>() * 1e-9));
+  EXPECT_FALSE(r.section.contains("name"));
+}
+
+// The grade form with a case's ν100 (a grade the catalogue has no ν100 for); the thermal form
+// needs a conductivity, which the catalogue has no source for: the case gives it.
+TEST(Lubricant, GradeWithGivenNu100) {
+  EXPECT_NE(error_of([] { (void)resolve({{"grade", 1000}, {"base", "pag"}, {"nu100_mm2_s", 120}}, SectionForm::thermal); })
+                .find("lubricant.thermal_conductivity_W_per_mK: missing"), std::string::npos);
+  const auto r = resolve({{"grade", 1000}, {"base", "pag"}, {"nu100_mm2_s", 120}, {"thermal_conductivity_W_per_mK", 0.15}},
+                         SectionForm::thermal);
+  EXPECT_EQ(r.section.at("nu40_mm2_s").get<double>(), 1000.0);
+  EXPECT_EQ(r.section.at("nu100_mm2_s").get<double>(), 120.0);
+  EXPECT_EQ(r.section.at("density_kg_m3").get<double>(), 1059.0);  // ρ15 of the PAG base
+}
+
+// Seed oils named from the catalogue reproduce the numbers their cases typed, exactly: the
+// named cases give bit-identical results (cases/*_named_oil.json).
+TEST(Lubricant, SeedOilsResolveToTheirCaseNumbers) {
+  const auto seed004 = resolve({{"name", "seed 004 oil"}}, SectionForm::gear, 39.85).section;
+  EXPECT_EQ(seed004, (json{{"viscosity_Pa_s", 0.08}, {"pressure_viscosity_1_per_GPa", 24.8}, {"roelands_z", 0.68}}));
+  const auto oil = resolve_section({{"name", "seed 001 PAO"}}, "micropitting.oil", SectionForm::micropitting_oil,
+                                   std::nullopt).section;
+  EXPECT_EQ(oil, (json{{"base", "polyalphaolefin"}, {"nu40_mm2_s", 320.0}, {"nu100_mm2_s", 20.0},
+                       {"density_15C_kg_m3", 900.0}}));
+}
+
+}  // namespace
+}  // namespace gearbench::lubricant
