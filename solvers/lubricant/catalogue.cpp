@@ -135,10 +135,6 @@ std::vector<std::string> Catalogue::names() const {
   return names;
 }
 
-std::string Catalogue::source_text(const std::string& key) const {
-  return sources_.contains(key) ? sources_.at(key).get<std::string>() : key;
-}
-
 OilData Catalogue::find(const std::string& name, const std::string& key) const {
   for (const auto& o : oils_)
     if (lower(o.name) == lower(name)) return with_base_defaults(o);

@@ -80,12 +80,7 @@ class Catalogue {
 
   [[nodiscard]] std::vector<std::string> names() const;
   [[nodiscard]] const std::vector<int>& grades() const { return grades_; }
-  /// The text of a source key.
-  [[nodiscard]] std::string source_text(const std::string& key) const;
   [[nodiscard]] const nlohmann::json& sources() const { return sources_; }
-  /// Temperature range [K] in which two-point oils resolve, and the data interval inside it.
-  [[nodiscard]] std::pair<double, double> temperature_range() const { return temperature_range_; }
-  [[nodiscard]] std::pair<double, double> data_interval() const { return data_interval_; }
 
  private:
   struct BaseData {
@@ -100,7 +95,7 @@ class Catalogue {
   std::vector<int> grades_;
   std::map<BaseOil, std::map<int, Sourced>> grade_nu100_;
   std::vector<OilData> oils_;
-  std::pair<double, double> temperature_range_, data_interval_;
+  std::pair<double, double> temperature_range_, data_interval_;  ///< [K]: resolvable, and the data points
   double min_viscosity_ = 2.0, single_point_tolerance_ = 0.01;
 };
 

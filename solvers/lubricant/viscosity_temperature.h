@@ -16,8 +16,7 @@ class WaltherLine {
   /// The line through (T1, ν1) and (T2, ν2), ν in mm²/s; T1 ≠ T2.
   WaltherLine(double T1, double nu1_mm2_s, double T2, double nu2_mm2_s);
   [[nodiscard]] double kinematic_viscosity_mm2_s(double T) const;
-  [[nodiscard]] double slope() const { return A_; }       ///< A
-  [[nodiscard]] double intercept() const { return B_; }   ///< B
+  [[nodiscard]] double slope() const { return A_; }  ///< A (negative: ν falls with T)
 
  private:
   double A_ = 0.0, B_ = 0.0;
