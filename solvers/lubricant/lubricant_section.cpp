@@ -122,6 +122,48 @@ json source_texts(const json& sources, const Catalogue& catalogue) {
   return texts;
 }
 
+/// The form's keys: the section's own where given, else the state's; `echo` gets the values,
+/// their sources and the explicit keys.
+json fill_form_keys(const json& section, const std::string& path, SectionForm form, const OilState& state,
+                    json& echo) {
+  json out = section;
+  for (const char* key : library_keys) out.erase(key);
+  json values = json::object(), sources = json::object(), explicit_keys = json::array();
+  for (const auto& k : form_keys(form)) {
+    if (section.contains(k.key)) {
+      explicit_keys.push_back(k.key);
+      sources[k.key] = "case";
+    } else if (const auto v = k.value(state)) {
+      out[k.key] = v->value;
+      sources[k.key] = v->source;
+    } else if (k.required) {
+      const bool ester_alpha = state.base == BaseOil::ester && std::string(k.key) == "pressure_viscosity_1_per_GPa";
+      throw InputError(fmt::format("{}.{}: missing: the catalogue has no sourced value for '{}'{}; give it", path, k.key,
+                                   state.name,
+                                   ester_alpha ? " (ISO/TR 15144-1 gives no pressure-viscosity formula for esters)" : ""));
+    }
+    if (out.contains(k.key)) values[k.key] = out[k.key];
+  }
+  echo["values"] = values;
+  echo["sources"] = sources;
+  echo["explicit"] = explicit_keys;
+  return out;
+}
+
+/// z follows η and α: recomputed (z = α·p0/(ln η0 + 9.67)) when the case gave either but not
+/// z. Values that are not positive numbers are left for the kind's reader to refuse.
+void follow_roelands_z(const json& section, json& out, json& echo) {
+  if (section.contains("roelands_z") ||
+      !(section.contains("viscosity_Pa_s") || section.contains("pressure_viscosity_1_per_GPa")))
+    return;
+  const auto& eta = out.at("viscosity_Pa_s");
+  const auto& alpha = out.at("pressure_viscosity_1_per_GPa");
+  if (!eta.is_number() || !alpha.is_number() || !(eta.get<double>() > 0.0) || !(alpha.get<double>() >= 0.0)) return;
+  out["roelands_z"] = roelands_z_from_alpha(eta.get<double>(), alpha.get<double>() * 1e-9);
+  echo["values"]["roelands_z"] = out["roelands_z"];
+  echo["sources"]["roelands_z"] = "roelands_z_from_alpha(case)";
+}
+
 }  // namespace
 
 bool names_oil(const json& section) {
@@ -145,41 +187,14 @@ ResolvedSection resolve_section(const json& section, const std::string& path, Se
     echo["temperature_C"] = std::round((T->value - celsius_zero) * 1e9) / 1e9;  // no 89.85000000000002
     echo["temperature_from"] = T->key;
   }
-  json out = section;
-  for (const char* key : library_keys) out.erase(key);
-  json values = json::object(), sources = json::object(), explicit_keys = json::array();
-  for (const auto& k : form_keys(form)) {
-    if (section.contains(k.key)) {
-      explicit_keys.push_back(k.key);
-      sources[k.key] = "case";
-    } else if (const auto v = k.value(state)) {
-      out[k.key] = v->value;
-      sources[k.key] = v->source;
-    } else if (k.required) {
-      throw InputError(fmt::format("{}.{}: missing: the catalogue has no sourced value for '{}'{}; give it", path, k.key,
-                                   oil.name, state.base == BaseOil::ester && std::string(k.key).find("pressure") == 0
-                                                 ? " (ISO/TR 15144-1 gives no pressure-viscosity formula for esters)" : ""));
-    }
-    if (out.contains(k.key)) values[k.key] = out[k.key];
-  }
-  // z follows η and α: recomputed when either was given by the case (z = α·p0/(ln η0 + 9.67)).
-  const bool has_z = form == SectionForm::gear || form == SectionForm::ehl_line;
-  if (has_z && !section.contains("roelands_z") &&
-      (section.contains("viscosity_Pa_s") || section.contains("pressure_viscosity_1_per_GPa"))) {
-    out["roelands_z"] = roelands_z_from_alpha(out.at("viscosity_Pa_s").get<double>(),
-                                              out.at("pressure_viscosity_1_per_GPa").get<double>() * 1e-9);
-    values["roelands_z"] = out["roelands_z"];
-    sources["roelands_z"] = "roelands_z_from_alpha(case)";
-  }
+  if (state.base) echo["base"] = base_oil_name(*state.base);
+  json out = fill_form_keys(section, path, form, state, echo);
+  if (form == SectionForm::gear || form == SectionForm::ehl_line) follow_roelands_z(section, out, echo);
   if (form == SectionForm::micropitting_oil) {
     out["base"] = iso15144_base(*state.base);
-    values["base"] = out["base"];
+    echo["values"]["base"] = out["base"];
   }
-  if (state.base) echo["base"] = base_oil_name(*state.base);
-  echo["values"] = values;
-  echo["sources"] = sources;
-  echo["explicit"] = explicit_keys;
-  echo["source_texts"] = source_texts(sources, catalogue);
+  echo["source_texts"] = source_texts(echo["sources"], catalogue);
   if (!state.warnings.empty()) echo["warnings"] = state.warnings;
   return {out, echo};
 }
