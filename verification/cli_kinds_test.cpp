@@ -60,6 +60,36 @@ TEST(Cli, EhlLineSaysWhenTheFilmIsNotGridConverged) {
   EXPECT_EQ(json::parse(light.out)["notes"].dump().find("not grid-converged"), std::string::npos);
 }
 
+// Issue 20: at high sliding a piezoviscous Newtonian film "carries" a shear force far above
+// the normal load (μ = 1.06e5 once, exit 0); the friction is withheld and the note says why.
+TEST(Cli, EhlLineWithholdsANewtonianTractionAboveTheLoad) {
+  const auto o = run_gearbench("run " + write_case("ehl_sliding", R"({"kind": "ehl_line",
+      "contact": {"reduced_radius_m": 0.00551, "load_per_length_N_per_m": 250750,
+                  "surface_speeds_m_per_s": [0.0569, 0.9737], "reduced_modulus_Pa": 2.2637e11},
+      "lubricant": {"viscosity_Pa_s": 0.08, "pressure_viscosity_1_per_GPa": 24.8, "roelands_z": 0.68},
+      "grid": {"nodes": 161}})"));
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  EXPECT_TRUE(r["friction_coefficient"].is_null());
+  EXPECT_TRUE(r["friction_force_per_length_N_per_m"].is_null());
+  EXPECT_GT(r["h_min_m"].get<double>(), 0.0);
+  EXPECT_NE(r["notes"].dump().find("would exceed the normal load"), std::string::npos) << r["notes"].dump();
+}
+
+// The same for the isothermal comparison of a thermal point at more sliding than the case's.
+TEST(Cli, ThermalPointWithholdsTheIsothermalNewtonianTractionAboveTheLoad) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/tehl_point_sliding.json");
+  auto j = json::parse(in);
+  j["contact"]["surface_speeds_m_per_s"] = {2.5, 1.0687};
+  const auto o = run_gearbench("run " + write_case("tehl_sliding", j.dump()));
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  EXPECT_TRUE(r["isothermal"]["friction_coefficient"].is_null());
+  EXPECT_TRUE(r["friction_coefficient"].is_number());  // the thermal film's own stays in range
+  EXPECT_NE(r["notes"].dump().find("isothermal solution's Newtonian traction would exceed"), std::string::npos)
+      << r["notes"].dump();
+}
+
 TEST(Cli, EhlLineBadInput) {
   const std::pair<std::string, std::string> cases[] = {
       {R"({"kind": "ehl_line", "moes": {"M": 20, "L": 10}, "contact": {}})", "give either \"moes\" or"},

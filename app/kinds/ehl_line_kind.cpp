@@ -99,6 +99,11 @@ json run_ehl_line(const json& case_json) {
     notes.push_back(fmt::format("h_min changes by {:.0f} % from the next-coarser grid ({} nodes): the film is not "
                                 "grid-converged; give more nodes (grid.nodes)",
                                 100.0 * r.h_min_change, (r.X.size() + 1) / 2));
+  if (!newtonian_friction_in_range(r.friction_coefficient)) {
+    notes.push_back(withheld_friction_note(r.friction_coefficient, ""));
+    out["friction_force_per_length_N_per_m"] = nullptr;
+    out["friction_coefficient"] = nullptr;
+  }
   if (!notes.empty()) out["notes"] = notes;
   if (!r.converged)
     throw ConvergenceError(r.failure_message(options.tolerance), out.dump(2));

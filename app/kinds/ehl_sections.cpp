@@ -51,6 +51,16 @@ ehl::EhlOptions read_ehl_grid(model::ObjectReader& root, ehl::EhlOptions default
 
 /// Non-finite numbers become null: diagnostics of a failed solve may hold them.
 nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+bool newtonian_friction_in_range(double mu) { return std::abs(mu) <= 1.0; }
+
+std::string withheld_friction_note(double mu, const std::string& whose) {
+  return fmt::format("{}Newtonian traction would exceed the normal load (friction coefficient {:.3g}): outside "
+                     "the Newtonian model, so no friction is given; the film figures stand (a lubricant's shear "
+                     "stress is limited: the efficiency kind's \"ehl\" law and the thermal kinds' "
+                     "lubricant.eyring_stress_MPa limit it by an Eyring stress)",
+                     whose.empty() ? "the " : whose + " ", mu);
+}
+
 nlohmann::json finite_vector(const std::vector<double>& v, double scale) {
   nlohmann::json out = nlohmann::json::array();
   for (double x : v) out.push_back(finite_or_null(x * scale));

@@ -30,4 +30,14 @@ ehl::LineContactData read_gear_fluid(model::ObjectReader& root, const model::Gea
 nlohmann::json finite_or_null(double v);
 nlohmann::json finite_vector(const std::vector<double>& v, double scale = 1.0);
 
+/// Whether a Newtonian friction coefficient can be given: |μ| ≤ 1. A liquid film carries no
+/// shear force above the normal load; a Newtonian traction beyond it (high slide-to-roll with a
+/// piezoviscous oil: η·Δu/h at e^{αp}) is outside the Newtonian model, whose real limit is the
+/// lubricant's limiting shear stress (Eyring τ0 of a few MPa, Yang & Wen 1990). Issue 20: the
+/// mutation campaign got μ = 1.06e5 from `ehl_line` and −1.45 from `tehl_point`, with exit 0.
+bool newtonian_friction_in_range(double mu);
+/// The note of a friction coefficient withheld by newtonian_friction_in_range; `whose` names
+/// the solution ("", "the isothermal solution's").
+std::string withheld_friction_note(double mu, const std::string& whose);
+
 }  // namespace gearbench::app

@@ -62,6 +62,16 @@ json thermal_result_json(const ehl::ThermalEhlResult& r, bool fields) {
                        {"seconds", r.seconds}}},
   };
   if (r.friction_coefficient_eyring) out["friction_coefficient_eyring"] = finite_or_null(*r.friction_coefficient_eyring);
+  json notes = json::array();
+  if (!newtonian_friction_in_range(r.friction_coefficient)) {
+    notes.push_back(withheld_friction_note(r.friction_coefficient, ""));
+    out["friction_coefficient"] = out["friction_force_per_length_N_per_m"] = nullptr;
+  }
+  if (!newtonian_friction_in_range(r.isothermal_friction_coefficient)) {
+    notes.push_back(withheld_friction_note(r.isothermal_friction_coefficient, "the isothermal solution's"));
+    out["isothermal"]["friction_coefficient"] = nullptr;
+  }
+  if (!notes.empty()) out["notes"] = notes;
   if (fields) {
     json film = json::array();
     for (const auto& column : r.film_temperature) film.push_back(finite_vector(column));
