@@ -23,7 +23,7 @@ const std::array<model::Material, 2> steel{model::Material{212e9, 0.289, 7850},
 
 void BM_PairComplianceOnePosition(benchmark::State& state) {
   const geometry::GearPairGeometry g(testing_support::seed003_pair());
-  const stiffness::PairStiffness pair(g, steel, stiffness::BeamStart::improved,
+  const stiffness::PairStiffness pair(g, steel, stiffness::ToothModel{},
                                       {0.5 * g.radii(0).root, 0.5 * g.radii(1).root}, std::nullopt, true);
   const double s = 0.5 * (g.path().A + g.path().E);
   for (auto _ : state) benchmark::DoNotOptimize(pair.compliance(s).total());
@@ -45,7 +45,7 @@ const double crack_angle = 45.0 * M_PI / 180.0;  // seed 003, section 1.3
 void BM_CrackedPairCompliance(benchmark::State& state) {
   const geometry::GearPairGeometry g(testing_support::seed003_pair());
   const stiffness::GearCrack crack{{stiffness::Crack::Type::pitch, 2.5e-3, crack_angle}, 0};
-  const stiffness::PairStiffness pair(g, steel, stiffness::BeamStart::improved,
+  const stiffness::PairStiffness pair(g, steel, stiffness::ToothModel{},
                                       {0.5 * g.radii(0).root, 0.5 * g.radii(1).root}, crack, true);
   const double s = g.path().A + g.base_pitch_transverse();
   for (auto _ : state) benchmark::DoNotOptimize(pair.compliance(s).total());

@@ -153,7 +153,7 @@ TEST(QuadratureReference, FilletMatchesIntegrationInX) {
     g.teeth = {z, 25};
     const double psi = std::tan(20 * deg), c = std::cos(psi - f.a2), s = std::sin(psi - f.a2);
     const QuadCompliance base = pinion(f.Rb * psi, QuadBeamStart::base_circle, {}, g);
-    const QuadCompliance improved = pinion(f.Rb * psi, QuadBeamStart::improved, {}, g);
+    const QuadCompliance improved = pinion(f.Rb * psi, QuadBeamStart::circular_arc, {}, g);
     const auto t = [&](double x) { return 2.0 * f.h(x); };
     const double bending = integrate(
         [&](double x) { return 12.0 * std::pow(f.Rb - c * x, 2) / (E * std::pow(t(x), 3) * L); },
@@ -178,10 +178,10 @@ struct BeamInX {
   double h_of(double a) const { return Rb1 * ((a + alpha2) * std::cos(a) - std::sin(a)); }
   double x0() const {
     if (start == QuadBeamStart::base_circle) return xB;
-    return start == QuadBeamStart::improved ? fillet.x0() : std::sqrt(Rf1 * Rf1 - hB * hB);
+    return start == QuadBeamStart::circular_arc ? fillet.x0() : std::sqrt(Rf1 * Rf1 - hB * hB);
   }
   double h(double x) const {
-    if (x < xB) return start == QuadBeamStart::improved ? fillet.h(x) : hB;
+    if (x < xB) return start == QuadBeamStart::circular_arc ? fillet.h(x) : hB;
     double lo = -alpha2, hi = 1.0;
     for (int i = 0; i < 60; ++i) (x_of(0.5 * (lo + hi)) < x ? lo : hi) = 0.5 * (lo + hi);
     return h_of(0.5 * (lo + hi));
@@ -198,9 +198,9 @@ TEST(QuadratureReference, CrackedBeamMatchesIntegrationInX) {
     Crack type;
     QuadBeamStart start;
     double q, nu;
-  } cases[] = {{Crack::pitch, QuadBeamStart::improved, 2.0e-3, 30 * deg},
+  } cases[] = {{Crack::pitch, QuadBeamStart::circular_arc, 2.0e-3, 30 * deg},
                {Crack::pitch, QuadBeamStart::straight, 2.2e-3, 60 * deg},  // h_c < 0
-               {Crack::root, QuadBeamStart::improved, 1.0e-3, 30 * deg},
+               {Crack::root, QuadBeamStart::circular_arc, 1.0e-3, 30 * deg},
                {Crack::root, QuadBeamStart::base_circle, 1.0e-3, 60 * deg}};
   for (const auto& k : cases) {
     const BeamInX beam{k.start};
@@ -239,7 +239,7 @@ TEST(QuadratureReference, CrackedBeamMatchesIntegrationInX) {
 TEST(QuadratureReference, ZeroLengthCrackIsHealthy) {
   const QuadContactPath path = contact_path_quadrature(seed003());
   for (auto start :
-       {QuadBeamStart::base_circle, QuadBeamStart::improved, QuadBeamStart::straight}) {
+       {QuadBeamStart::base_circle, QuadBeamStart::circular_arc, QuadBeamStart::straight}) {
     for (auto [type, s] :
          {std::pair{Crack::pitch, path.end}, std::pair{Crack::root, path.pitch_point}}) {
       SCOPED_TRACE(::testing::Message() << "start " << static_cast<int>(start) << ", crack "
@@ -247,7 +247,7 @@ TEST(QuadratureReference, ZeroLengthCrackIsHealthy) {
       const QuadCompliance healthy = pinion(s, start);
       expect_equal(pinion(s, start, {type, 0.0, 45 * deg}), healthy);
       const QuadCompliance tiny = pinion(s, start, {type, 1e-9, 45 * deg});
-      if (type == Crack::root && start != QuadBeamStart::improved)
+      if (type == Crack::root && start != QuadBeamStart::circular_arc)
         EXPECT_GT(tiny.bending, (1.0 + 1e-5) * healthy.bending);
       else
         expect_relative(tiny, healthy, 1e-9);
@@ -261,9 +261,9 @@ TEST(QuadratureReference, PitchCrackGrowsAboveAndIsInertBelow) {
   const QuadContactPath p = contact_path_quadrature(seed003());
   const std::vector<double> q{0.0, 1e-3, 2e-3, 2.5e-3};
   for (double s : {0.5 * (p.pitch_point + p.end), p.end}) {
-    QuadCompliance previous = pinion(s, QuadBeamStart::improved);
+    QuadCompliance previous = pinion(s, QuadBeamStart::circular_arc);
     for (std::size_t i = 1; i < q.size(); ++i) {
-      const QuadCompliance k = pinion(s, QuadBeamStart::improved, {Crack::pitch, q[i], 45 * deg});
+      const QuadCompliance k = pinion(s, QuadBeamStart::circular_arc, {Crack::pitch, q[i], 45 * deg});
       EXPECT_GT(k.bending, previous.bending) << "s = " << s << ", q = " << q[i];
       EXPECT_GT(k.shear, previous.shear) << "s = " << s << ", q = " << q[i];
       EXPECT_GT(k.axial, previous.axial) << "s = " << s << ", q = " << q[i];
@@ -272,17 +272,17 @@ TEST(QuadratureReference, PitchCrackGrowsAboveAndIsInertBelow) {
   }
   for (double s : {p.start, 0.5 * (p.start + p.pitch_point)})
     for (double length : q)
-      expect_equal(pinion(s, QuadBeamStart::improved, {Crack::pitch, length, 45 * deg}),
-                   pinion(s, QuadBeamStart::improved));
+      expect_equal(pinion(s, QuadBeamStart::circular_arc, {Crack::pitch, length, 45 * deg}),
+                   pinion(s, QuadBeamStart::circular_arc));
 }
 
 // A root crack weakens the beam at every load position, more the longer it is.
 TEST(QuadratureReference, RootCrackGrowsEverywhere) {
   const QuadContactPath p = contact_path_quadrature(seed003());
   for (double s : {p.start, p.pitch_point, p.end}) {
-    double previous = pinion(s, QuadBeamStart::improved).bending;
+    double previous = pinion(s, QuadBeamStart::circular_arc).bending;
     for (double length : {0.5e-3, 1e-3, 1.5e-3}) {
-      const double k = pinion(s, QuadBeamStart::improved, {Crack::root, length, 45 * deg}).bending;
+      const double k = pinion(s, QuadBeamStart::circular_arc, {Crack::root, length, 45 * deg}).bending;
       EXPECT_GT(k, previous) << "s = " << s << ", q = " << length;
       previous = k;
     }
@@ -306,7 +306,7 @@ TEST(QuadratureReference, ContinuousWhereRootMeetsBaseCircle) {
                      std::abs(below.shear / above.shear - 1.0),
                      std::abs(below.axial / above.axial - 1.0)});
   };
-  for (auto start : {QuadBeamStart::improved, QuadBeamStart::straight}) {
+  for (auto start : {QuadBeamStart::circular_arc, QuadBeamStart::straight}) {
     const double coarse = change_across(1e-6, start), fine = change_across(1e-8, start);
     EXPECT_LT(coarse, 1e-3);
     EXPECT_NEAR(fine / coarse, 1e-2, 2e-3);
@@ -321,8 +321,8 @@ TEST(QuadratureReference, WheelMirrorsPinionInEqualPair) {
   const QuadContactPath p = contact_path_quadrature(g);
   for (double s : {p.start, p.pitch_point, 0.3 * p.start + 0.7 * p.end}) {
     const QuadCompliance wheel =
-        energy_compliance_quadrature(g, steel, 1, s, QuadBeamStart::improved, {}, L);
-    expect_relative(wheel, pinion(p.line_of_action_length - s, QuadBeamStart::improved, {}, g),
+        energy_compliance_quadrature(g, steel, 1, s, QuadBeamStart::circular_arc, {}, L);
+    expect_relative(wheel, pinion(p.line_of_action_length - s, QuadBeamStart::circular_arc, {}, g),
                     1e-11);
   }
 }
@@ -355,16 +355,16 @@ TEST(QuadratureReference, PathOfContact) {
 TEST(QuadratureReference, RejectsLoadsOffTheFlankAndCutThroughSections) {
   const model::GearPair g = seed003();
   const QuadContactPath p = contact_path_quadrature(g);
-  EXPECT_THROW(pinion(1.01 * p.end, QuadBeamStart::improved), std::domain_error);
-  EXPECT_THROW(pinion(p.end, QuadBeamStart::improved, {Crack::pitch, 10e-3, 45 * deg}),
+  EXPECT_THROW(pinion(1.01 * p.end, QuadBeamStart::circular_arc), std::domain_error);
+  EXPECT_THROW(pinion(p.end, QuadBeamStart::circular_arc, {Crack::pitch, 10e-3, 45 * deg}),
                std::domain_error);
-  EXPECT_THROW(pinion(p.end, QuadBeamStart::improved, {Crack::root, -1e-3, 45 * deg}),
+  EXPECT_THROW(pinion(p.end, QuadBeamStart::circular_arc, {Crack::root, -1e-3, 45 * deg}),
                std::invalid_argument);
-  EXPECT_THROW(energy_compliance_quadrature(g, steel, 2, p.end, QuadBeamStart::improved, {}, L),
+  EXPECT_THROW(energy_compliance_quadrature(g, steel, 2, p.end, QuadBeamStart::circular_arc, {}, L),
                std::invalid_argument);
   model::GearPair big = g;  // z = 60: R_f = 57.5 mm > R_b = 56.38 mm
   big.teeth = {60, 60};
-  EXPECT_THROW(pinion(1e-4, QuadBeamStart::improved, {}, big), std::domain_error);
+  EXPECT_THROW(pinion(1e-4, QuadBeamStart::circular_arc, {}, big), std::domain_error);
 }
 
 // Prints the seed 003 pinion's healthy compliances at C and E for cross-checking.
@@ -374,7 +374,7 @@ TEST(QuadratureReference, PrintSeed003Pinion) {
              p.end * 1e3);
   const std::pair<const char*, QuadBeamStart> starts[] = {
       {"base_circle", QuadBeamStart::base_circle},
-      {"improved", QuadBeamStart::improved},
+      {"improved", QuadBeamStart::circular_arc},
       {"straight", QuadBeamStart::straight}};
   for (auto [name, start] : starts)
     for (auto [where, s] : {std::pair{"C", p.pitch_point}, std::pair{"E", p.end}}) {

@@ -26,16 +26,18 @@ TEST(Hertz, EqualMaterialsForm) {
   EXPECT_LT(hertz_stiffness(steel, soft, 0.02), hertz_stiffness(steel, steel, 0.02));
 }
 
+constexpr ToothModel arc{BeamStart::improved, Fillet::circular_arc};
+
 TEST(ToothProfile, ImprovedFilletMeetsInvoluteAtBaseCircle) {
   const geometry::GearPairGeometry g(seed003());
-  const ToothProfile p(g, 0, BeamStart::improved);
+  const ToothProfile p(g, 0, arc);
   ASSERT_LT(p.root_radius(), p.base_radius());
   EXPECT_GT(p.fillet_radius(), 0.0);
   const double xB = p.base_point_x();
   EXPECT_NEAR(p.half_thickness(xB - 1e-12), p.half_thickness(xB + 1e-12), 1e-10);
   EXPECT_LT(p.beam_start(), xB);
   // The fillet thickens the tooth toward the root: thicker than the straight variant.
-  const ToothProfile straight(g, 0, BeamStart::straight);
+  const ToothProfile straight(g, 0, {BeamStart::straight});
   EXPECT_GT(p.half_thickness(0.5 * (p.beam_start() + xB)), straight.half_thickness(0.5 * (p.beam_start() + xB)));
 }
 
@@ -43,14 +45,52 @@ TEST(ToothProfile, RootAboveBaseStartsOnTheInvolute) {
   auto pair = seed003();
   pair.teeth = {60, 80};
   const geometry::GearPairGeometry g(pair);
-  const ToothProfile p(g, 0, BeamStart::improved);
+  const ToothProfile p(g, 0, arc);
   ASSERT_GT(p.root_radius(), p.base_radius());
   EXPECT_NEAR(std::hypot(p.beam_start(), p.half_thickness(p.beam_start())), p.root_radius(), 1e-12);
 }
 
+// The generated fillet starts on the root circle at the polar angle of the rack's tip-line
+// end, θ_f = [π/2 + 2 tan α (h_fP* − ρ*) + 2ρ*/cos α]/z (docs/research/stiffness.md §1.4,
+// independent of the shift), and meets the involute on the form circle of the geometry
+// (ISO 21771) with the same half thickness: shifted and unshifted, R_f below and above R_b,
+// ISO 53 profiles A and D.
+TEST(ToothProfile, TrochoidRunsFromRootCircleToFormCircle) {
+  struct Case { int z; double x, h_fP, rho; };
+  for (const Case c : {Case{20, 0.0, 1.25, 0.38}, Case{25, 0.3, 1.25, 0.38}, Case{62, 0.0, 1.25, 0.38},
+                       Case{19, 0.2, 1.4, 0.39}, Case{48, -0.2, 1.25, 0.25}}) {
+    auto pair = seed003();
+    pair.teeth = {c.z, 80};
+    pair.profile_shift = {c.x, 0.0};
+    pair.dedendum_coef = c.h_fP;
+    pair.root_radius_coef = c.rho;
+    const geometry::GearPairGeometry g(pair);
+    const ToothProfile p(g, 0, {});
+    const double x0 = p.beam_start(), h0 = p.half_thickness(x0);
+    EXPECT_NEAR(std::hypot(x0, h0), g.radii(0).root, 1e-12) << c.z;
+    const double a = pair.normal_pressure_angle;
+    const double theta_f = (M_PI / 2 + 2 * std::tan(a) * (c.h_fP - c.rho) + 2 * c.rho / std::cos(a)) / c.z;
+    EXPECT_NEAR(std::atan2(h0, x0), theta_f, 1e-12) << c.z;
+    const double xF = p.fillet_end_x();
+    EXPECT_NEAR(p.half_thickness(xF * (1 - 1e-13)), p.half_thickness(xF * (1 + 1e-13)), 1e-11) << c.z;
+    EXPECT_NEAR(std::hypot(xF, p.half_thickness(xF)), g.radii(0).form, 1e-9) << c.z;
+  }
+}
+
+TEST(ToothProfile, TrochoidNeedsARackTipRadiusThatFits) {
+  auto pair = seed003();
+  pair.teeth = {25, 30};  // free of undercut without a tip radius
+  pair.root_radius_coef = 0.0;
+  EXPECT_NE(input_error_of([&] { ToothProfile(geometry::GearPairGeometry(pair), 0, {}); }).find("root_radius_coef"),
+            std::string::npos);
+  pair.root_radius_coef = 0.5;  // h_fP 1.25 at 20°: the round fits for ρ ≤ 0.472 m_n
+  EXPECT_NE(input_error_of([&] { ToothProfile(geometry::GearPairGeometry(pair), 0, {}); }).find("does not fit"),
+            std::string::npos);
+}
+
 TEST(StiffnessLoadSharing, SharesSumToOne) {
   const geometry::GearPairGeometry g(seed003());
-  const PairStiffness k(g, steels, BeamStart::improved, {8e-3, 10e-3}, std::nullopt, true);
+  const PairStiffness k(g, steels, {}, {8e-3, 10e-3}, std::nullopt, true);
   const StiffnessLoadSharing sharing(k);
   const auto& p = g.path();
   const double pb = g.base_pitch_transverse();

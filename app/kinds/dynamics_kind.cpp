@@ -5,7 +5,7 @@
 #include <iostream>
 #include <tuple>
 
-#include "crack_section.h"
+#include "tooth_sections.h"
 #include "dynamics/herringbone12_dynamics.h"
 #include "dynamics/spur6_dynamics.h"
 #include "efficiency/dynamic_efficiency.h"
@@ -73,6 +73,7 @@ dynamics::Spur6Options read_spur6_options(model::ObjectReader& root, const json&
   }
   read_common_options(root, c, o, o.friction_coefficient, o.friction_law);
   o.crack = read_crack(root, 1);
+  o.fillet = read_fillet(root);
   return o;
 }
 
@@ -105,6 +106,7 @@ dynamics::Herringbone12Options read_herringbone_options(model::ObjectReader& roo
     m.finish();
   }
   read_common_options(root, c, o, o.mesh.friction_coefficient, o.mesh.friction_law);
+  o.mesh.fillet = read_fillet(root);
   o.mesh_in_impact = optional_bool(root, case_json, "mesh_in_impact").value_or(o.mesh_in_impact);
   o.half_offset = root.optional_number("half_offset_cycles", Range::closed(0.0, 1.0)).value_or(o.half_offset);
   return o;

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "crack_section.h"
+#include "tooth_sections.h"
 #include "fe_tooth/fe_tooth_stiffness.h"
 #include "kind_registry.h"
 #include "model/case_reader.h"

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "closed_form/iso6336_stiffness.h"
-#include "crack_section.h"
+#include "tooth_sections.h"
 #include "kind_registry.h"
 #include "model/case_reader.h"
 #include "model/errors.h"
@@ -36,6 +36,10 @@ json run_stiffness(const json& case_json) {
   if (!gear_case.materials) throw InputError("materials: missing required key (kind stiffness)");
   stiffness::MeshStiffnessOptions options;
   options.beam_start = read_beam_start(root);
+  if (root.has("fillet") && options.beam_start != stiffness::BeamStart::improved)
+    throw InputError("fillet = " + model::shown_value(case_json["fillet"]) +
+                     ": allowed only with beam_start \"improved\" (the other beams have no fillet)");
+  options.fillet = read_fillet(root);
   options.positions = root.optional_integer("positions", 2, 100000).value_or(360);
   options.path_points = root.optional_integer("path_points", 2, 100000).value_or(201);
   options.slices = root.optional_integer("slices", 1, 10000).value_or(50);

@@ -1,6 +1,7 @@
 #include "quadrature/energy_quadrature.h"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "closed_form/involute_closed_form.h"
+#include "quadrature/trochoid_fillet.h"
 
 namespace gearbench::reference {
 
@@ -115,8 +117,9 @@ double involute_angle_at_radius(const Tooth& t, double r) {
 // ------------------------------------------------------------------ the beam
 
 // The beam from its start to the load is a chain of pieces, each in its own parameter u:
-// straight (u = x), fillet (u = φ, the arc angle from B) and involute (u = α).
-enum class PieceKind { straight, fillet, involute };
+// straight (u = x), fillet (u = φ, the arc angle from B), trochoid (u = φ, the gear's roll
+// angle while the rack generates it) and involute (u = α).
+enum class PieceKind { straight, fillet, trochoid, involute };
 struct Piece {
   PieceKind kind;
   double lo, hi;  // parameter range, lo < hi
@@ -128,6 +131,7 @@ struct Beam {
   double rho;     // fillet radius (spec, "improved" for R_f < R_b)
   double x0, h0;  // beam start
   std::vector<Piece> pieces;
+  TrochoidFillet trochoid{};  // the generated fillet (trochoid start only)
 };
 
 // A section: its axial position, half thickness and |dx/du|.
@@ -139,6 +143,10 @@ Section section_at(const Beam& b, PieceKind kind, double u) {
   if (kind == PieceKind::straight) return {u, b.hB, 1.0};
   if (kind == PieceKind::fillet)  // x = x_B − ρ sin φ, h = h_B + ρ(1 − cos φ)
     return {b.xB - b.rho * std::sin(u), b.hB + b.rho * (1.0 - std::cos(u)), b.rho * std::cos(u)};
+  if (kind == PieceKind::trochoid) {  // x falls as φ grows from the form to the root circle
+    const TrochoidFillet::Point p = b.trochoid.at(u);
+    return {p.x, p.h, -p.dx};
+  }
   return {involute_x(b.tooth, u), involute_h(b.tooth, u), involute_dx(b.tooth, u)};
 }
 
@@ -171,19 +179,35 @@ void add_straight_section(Beam& b) {
   b.pieces.push_back({PieceKind::straight, b.x0, b.xB});
 }
 
-// Spec, "Where the beam starts": the piece below B (if any), then the involute up to α_1.
-Beam beam_of(const Tooth& t, QuadBeamStart start, double alpha1) {
+// Spec, "The generated fillet": from the root circle (φ_root) to the form circle (φ_form),
+// where the involute takes over; returns the involute's α there.
+double add_trochoid(Beam& b, const model::GearPair& pair, int gear) {
+  b.trochoid = trochoid_fillet(pair, gear);
+  b.pieces.push_back({PieceKind::trochoid, b.trochoid.phi_form, b.trochoid.phi_root});
+  const TrochoidFillet::Point root = b.trochoid.at(b.trochoid.phi_root);
+  const TrochoidFillet::Point form = b.trochoid.at(b.trochoid.phi_form);
+  b.x0 = root.x;
+  b.h0 = root.h;
+  return involute_angle_at_radius(b.tooth, std::hypot(form.x, form.h));
+}
+
+// Spec, "Where the beam starts": the piece below the involute (if any), then the involute
+// up to α_1.
+Beam beam_of(const model::GearPair& pair, int gear, QuadBeamStart start, double alpha1) {
+  const Tooth t = tooth_of(pair, gear);
   const double xB = t.Rb * std::cos(t.alpha2), hB = t.Rb * std::sin(t.alpha2);
   Beam b{t, xB, hB, 0.0, xB, hB, {}};  // base_circle: the beam starts at B
   double involute_start = -t.alpha2;
-  if (start != QuadBeamStart::base_circle) {
+  if (start == QuadBeamStart::trochoid) {
+    involute_start = add_trochoid(b, pair, gear);
+  } else if (start != QuadBeamStart::base_circle) {
     if (t.Rf >= t.Rb) {  // the beam starts on the involute at the root circle
       involute_start = involute_angle_at_radius(t, t.Rf);
       b.x0 = involute_x(t, involute_start);
       b.h0 = involute_h(t, involute_start);
     } else if (t.Rf <= hB) {
       throw std::domain_error("root circle too small for the beam model");
-    } else if (start == QuadBeamStart::improved) {
+    } else if (start == QuadBeamStart::circular_arc) {
       add_fillet(b);
     } else {
       add_straight_section(b);
@@ -248,6 +272,20 @@ std::vector<double> crack_breaks_on_fillet(const Beam& b, const CrackLine& c) {
   return breaks;
 }
 
+// The trochoid's x and h are smooth in φ with at most a few extrema: sign changes on 256
+// steps bracket the crossings of x_c and h_c, Brent's method pins each down.
+std::vector<double> crack_breaks_on_trochoid(const Beam& b, const Piece& p, const CrackLine& c) {
+  std::vector<double> breaks;
+  constexpr int steps = 256;
+  for (const auto& f : {std::function<double(double)>([&](double u) { return b.trochoid.at(u).x - c.xc; }),
+                        std::function<double(double)>([&](double u) { return b.trochoid.at(u).h - c.hc; })})
+    for (int k = 0; k < steps; ++k) {
+      const double lo = p.lo + (p.hi - p.lo) * k / steps, hi = p.lo + (p.hi - p.lo) * (k + 1) / steps;
+      if (f(lo) * f(hi) < 0.0) breaks.push_back(brent_root(f, lo, hi));
+    }
+  return breaks;
+}
+
 // [lo, interior break points ..., hi] for gsl_integration_qagp.
 std::vector<double> quadrature_points(const Beam& b, const Piece& p, const CrackLine& c) {
   std::vector<double> breaks;
@@ -258,6 +296,9 @@ std::vector<double> quadrature_points(const Beam& b, const Piece& p, const Crack
         break;
       case PieceKind::fillet:
         breaks = crack_breaks_on_fillet(b, c);
+        break;
+      case PieceKind::trochoid:
+        breaks = crack_breaks_on_trochoid(b, p, c);
         break;
       case PieceKind::involute:
         breaks = crack_breaks_on_involute(b.tooth, p, c);
@@ -328,7 +369,7 @@ QuadCompliance energy_compliance_quadrature(const model::GearPair& pair,
 
   // Spec, "The load": α_1 = ψ − α_2, load point (x_1, h_1), F_b = F cos α_1, F_a = F sin α_1.
   const double alpha1 = psi - tooth.alpha2;
-  const Beam beam = beam_of(tooth, start, alpha1);
+  const Beam beam = beam_of(pair, gear, start, alpha1);
   const CrackLine crack_at_load = crack_line(beam, crack, alpha1);
   const double x1 = involute_x(tooth, alpha1), h1 = involute_h(tooth, alpha1);
   if (thickness({x1, h1, 0.0}, crack_at_load) <= 0.0)
@@ -353,7 +394,7 @@ QuadLoadGeometry load_geometry_quadrature(const model::GearPair& pair, int gear,
   gsl_set_error_handler_off();
   const Tooth tooth = tooth_of(pair, gear);
   const double alpha1 = roll_angle(pair, tooth, gear, s) - tooth.alpha2;
-  const Beam beam = beam_of(tooth, start, alpha1);
+  const Beam beam = beam_of(pair, gear, start, alpha1);
   return {beam.x0, beam.h0, involute_x(tooth, alpha1), involute_h(tooth, alpha1), alpha1};
 }
 

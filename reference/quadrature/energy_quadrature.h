@@ -3,7 +3,8 @@
 //
 // The production solver integrates along the tooth axis x; this reference integrates each
 // part of the beam in its own natural parameter instead: the involute in Tian's pressure
-// angle α (dx = R_b(α + α_2)·cos α dα), the circular-arc fillet in its arc angle φ and the
+// angle α (dx = R_b(α + α_2)·cos α dα), the circular-arc fillet in its arc angle φ, the
+// generated trochoid fillet in the gear's roll angle φ (trochoid_fillet.h) and the
 // straight section in x. Every integral is GSL's adaptive gsl_integration_qagp with break
 // points where the crack makes the integrand kink or jump, to a relative error of 1e-10;
 // every root (the involute at a given radius, x or h) is GSL's Brent bracketing to 1e-14 rad.
@@ -14,8 +15,9 @@
 
 namespace gearbench::reference {
 
-/// Where the cantilever beam starts (spec, "Where the beam starts").
-enum class QuadBeamStart { base_circle, improved, straight };
+/// Where the cantilever beam starts (spec, "Where the beam starts"): `circular_arc` and
+/// `trochoid` are the spec's `improved` beam with each of its two fillets.
+enum class QuadBeamStart { base_circle, circular_arc, trochoid, straight };
 
 /// A straight crack through the face width (spec, "Cracks").
 struct QuadCrack {

@@ -97,7 +97,7 @@ HalfMesh::HalfMesh(const geometry::GearPairGeometry& geometry, const std::array<
                    const model::OperatingPoint& operating, HalfMeshOptions options)
     : geometry_(geometry),
       options_((options.validate(), options)),
-      pair_(geometry, materials, stiffness::BeamStart::improved,
+      pair_(geometry, materials, stiffness::ToothModel{stiffness::BeamStart::improved, options_.fillet},
             {0.5 * geometry.radii(0).root, 0.5 * geometry.radii(1).root}, std::nullopt, true),
       friction_(geometry, materials, operating, options_.friction_coefficient, options_.friction_law) {
   const double pinion_speed = operating.pinion_speed;

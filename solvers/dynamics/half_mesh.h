@@ -60,6 +60,7 @@ struct HalfMeshOptions {
   int harmonics = 24;   ///< mesh harmonics kept of the tables (helical); the slicing's steps lie far above
   double friction_coefficient = 0.0;  ///< μ of the constant law
   FrictionLawOptions friction_law;    ///< a law of solvers/lubricant instead
+  stiffness::Fillet fillet = stiffness::Fillet::trochoid;  ///< of the energy-method tooth (mesh stiffness)
   void validate() const;  ///< InputError naming the key
 };
 

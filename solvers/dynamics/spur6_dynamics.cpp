@@ -59,7 +59,7 @@ Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
     : geometry_(geometry),
       options_((options.validate(), std::move(options))),
       friction_(geometry, materials, operating, options_.friction_coefficient, options_.friction_law),
-      pair_(geometry, materials, stiffness::BeamStart::improved,
+      pair_(geometry, materials, stiffness::ToothModel{stiffness::BeamStart::improved, options_.fillet},
             {0.5 * geometry.radii(0).root, 0.5 * geometry.radii(1).root}, options_.crack, true) {
   if (geometry_.base_helix_angle() > 0.0)
     throw InputError(fmt::format("gear_pair.helix_angle_deg = {:.6g}: model \"spur6\" needs 0 (a spur pair)",

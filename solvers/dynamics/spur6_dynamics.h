@@ -32,6 +32,7 @@ struct Spur6Options {
   /// Backlash b [m]: contact loss on (docs, "Contact loss"); none: the linear mesh.
   std::optional<double> backlash;
   std::optional<stiffness::GearCrack> crack;
+  stiffness::Fillet fillet = stiffness::Fillet::trochoid;  ///< of the energy-method tooth (mesh stiffness)
   int runup_cycles = 60;             ///< mesh cycles before recording (whole revolutions with a crack)
   int record_cycles = 40;            ///< mesh cycles recorded (at least two revolutions with a crack)
   int samples_per_cycle = 64;

@@ -81,7 +81,7 @@ MeshLoss::MeshLoss(const geometry::GearPairGeometry& geometry, const model::Oper
   if (options_.load_sharing == "stiffness") {
     require_media(media_.materials.has_value(), "materials", "load_sharing = stiffness");
     pair_stiffness_ = std::make_unique<stiffness::PairStiffness>(
-        geometry_, *media_.materials, stiffness::BeamStart::improved,
+        geometry_, *media_.materials, stiffness::ToothModel{},
         std::array<double, 2>{0.5 * geometry_.radii(0).root, 0.5 * geometry_.radii(1).root}, std::nullopt, true);
     sharing_ = std::make_unique<stiffness::StiffnessLoadSharing>(*pair_stiffness_);
   } else {

@@ -76,7 +76,7 @@ EhlResult OilFilmStiffness::solve_contact(const LineContactData& d, double s) co
 OilFilmStiffnessResult OilFilmStiffness::solve() const {
   const auto start = std::chrono::steady_clock::now();
   const auto sharing = geometry::make_load_sharing(options_.load_sharing, "load_sharing");
-  const stiffness::PairStiffness pair(geometry_, materials_, stiffness::BeamStart::improved,
+  const stiffness::PairStiffness pair(geometry_, materials_, stiffness::ToothModel{},
                                       {geometry_.radii(0).root / 2.0, geometry_.radii(1).root / 2.0},
                                       std::nullopt, true);
   const double b = geometry_.pair().face_width;

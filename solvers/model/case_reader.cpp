@@ -2,6 +2,7 @@
 
 #include "errors.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
@@ -33,6 +34,49 @@ void check_shift_sum(const GearPair& g, const std::string& key) {
 }
 }  // namespace
 
+namespace {
+/// Tip radius of a full-round rack [m_n]: its two tip rounds meet on the tooth's centre line,
+/// tangent to the flanks (π/4 − h_fP tan α = ρ(1/cos α − tan α)): the largest that fits.
+double full_round_tip_radius(double dedendum_coef, double pressure_angle) {
+  return std::max(0.0, std::numbers::pi / 4.0 - dedendum_coef * std::tan(pressure_angle)) /
+         (1.0 / std::cos(pressure_angle) - std::tan(pressure_angle));
+}
+
+/// ISO 53:1998 basic rack profiles (h_aP 1, α 20°): dedendum h_fP and tip radius ρ_fP in m_n.
+struct RackProfile {
+  double dedendum, tip_radius;
+};
+RackProfile iso53_profile(const std::string& name) {
+  if (name == "B") return {1.25, 0.30};
+  if (name == "C") return {1.25, 0.25};
+  if (name == "D") return {1.40, 0.39};
+  return {1.25, 0.38};  // A
+}
+
+/// "basic_rack": "ISO53_A" … "ISO53_D", or "dedendum_coef" and "root_radius_coef" given
+/// singly. Without either, profile A's 1.25 and 0.38, but for racks too narrow for ρ 0.38
+/// (pressure angles above about 22°, which ISO 53 does not cover) the full-round tip radius.
+void read_basic_rack(ObjectReader& s, GearPair& g) {
+  const auto rack = s.optional_string("basic_rack", {"ISO53_A", "ISO53_B", "ISO53_C", "ISO53_D"});
+  const auto dedendum = s.optional_number("dedendum_coef", Range::positive(2.5));
+  const auto tip_radius = s.optional_number("root_radius_coef", {0.0, 1.0, false, true});
+  if (rack && (dedendum || tip_radius))
+    throw InputError(s.key_path("basic_rack") + " = \"" + *rack +
+                     "\": sets dedendum_coef and root_radius_coef; give either the profile or the two values");
+  if (rack) {
+    if (std::abs(g.normal_pressure_angle - 20.0 * deg) > 1e-12)
+      throw InputError(s.key_path("basic_rack") + " = \"" + *rack + "\": ISO 53 profiles have a 20 deg pressure angle");
+    const auto p = iso53_profile(rack->substr(6));
+    g.dedendum_coef = p.dedendum;
+    g.root_radius_coef = p.tip_radius;
+    return;
+  }
+  g.dedendum_coef = dedendum.value_or(1.25);
+  g.root_radius_coef =
+      tip_radius.value_or(std::min(0.38, full_round_tip_radius(g.dedendum_coef, g.normal_pressure_angle)));
+}
+}  // namespace
+
 GearPair read_gear_pair(ObjectReader s) {
   GearPair g;
   // Tooth counts: the undercut-free minimum depends on the shift and is checked by the
@@ -48,9 +92,7 @@ GearPair read_gear_pair(ObjectReader s) {
       s.optional_number_pair("profile_shift", Range::closed(-1.0, 2.0)).value_or(
           std::array<double, 2>{0.0, 0.0});
   g.addendum_coef = s.optional_number("addendum_coef", Range::positive(2.0)).value_or(1.0);
-  g.dedendum_coef = s.optional_number("dedendum_coef", Range::positive(2.5)).value_or(1.25);
-  g.root_radius_coef =
-      s.optional_number("root_radius_coef", {0.0, 1.0, false, true}).value_or(0.38);
+  read_basic_rack(s, g);
   check_shift_sum(g, s.key_path("profile_shift"));
   if (auto a = s.optional_number("center_distance_mm", Range::positive(1e6), "mm"))
     g.center_distance = *a * mm;

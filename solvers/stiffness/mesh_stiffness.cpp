@@ -41,7 +41,8 @@ MeshStiffness::MeshStiffness(const geometry::GearPairGeometry& geometry,
                              MeshStiffnessOptions options)
     : geometry_(geometry),
       options_((options.validate(), reject_helical_crack(geometry, options), std::move(options))),
-      pair_(geometry, materials, options_.beam_start, bore_radii(), options_.crack, options_.foundation) {
+      pair_(geometry, materials, {options_.beam_start, options_.fillet}, bore_radii(), options_.crack,
+            options_.foundation) {
   if (geometry_.base_helix_angle() > 0.0 && options_.slices > 1) {
     const auto& p = geometry_.path();
     std::vector<double> s(static_cast<std::size_t>(options_.spline_nodes)), k(s.size());

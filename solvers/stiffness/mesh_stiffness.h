@@ -17,6 +17,7 @@ namespace gearbench::stiffness {
 
 struct MeshStiffnessOptions {
   BeamStart beam_start = BeamStart::improved;
+  Fillet fillet = Fillet::trochoid;  ///< of the improved beam (docs/stiffness-model.md)
   int positions = 360;            ///< mesh positions over one mesh cycle
   int path_points = 201;          ///< points of the single-pair curve along A..E
   int slices = 50;                ///< face-width slices of a helical pair (spur: 1)

@@ -11,14 +11,14 @@ double PairCompliance::total() const {
 }
 
 PairStiffness::PairStiffness(const geometry::GearPairGeometry& geometry,
-                             const std::array<model::Material, 2>& materials, BeamStart start,
+                             const std::array<model::Material, 2>& materials, ToothModel tooth_model,
                              const std::array<double, 2>& bore_radii,
                              const std::optional<GearCrack>& crack, bool with_foundation)
     : geometry_(geometry), with_foundation_(with_foundation), cracked_(crack && crack->crack.length > 0.0) {
   teeth_.reserve(2);
   for (int gear = 0; gear < 2; ++gear) {
     const auto i = static_cast<std::size_t>(gear);
-    ToothProfile profile(geometry, gear, start);
+    ToothProfile profile(geometry, gear, tooth_model);
     foundation_[i] = foundation_parameters(profile, bore_radii[i], materials[i].youngs_modulus, 1.0);
     if (with_foundation_)
       for (auto& w : foundation_validity_warnings(foundation_[i], gear)) warnings_.push_back(std::move(w));

@@ -31,7 +31,7 @@ struct PairCompliance {
 class PairStiffness {
  public:
   PairStiffness(const geometry::GearPairGeometry& geometry, const std::array<model::Material, 2>& materials,
-                BeamStart start, const std::array<double, 2>& bore_radii,
+                ToothModel tooth_model, const std::array<double, 2>& bore_radii,
                 const std::optional<GearCrack>& crack, bool with_foundation);
 
   /// Compliances per unit width with the pair in contact at s (m from T1); `healthy`

@@ -85,14 +85,14 @@ ToothCompliance::Moments ToothCompliance::panel_moments(double a, double b, bool
 }
 
 // Panels: each smooth stretch of h(x) (fillet or straight part, involute, and either side
-// of the crack's break points) gets its own uniform panels.
+// of the crack's break points, where the thickness kinks) gets its own uniform panels.
 ToothCompliance::Table ToothCompliance::build_table(bool cracked) const {
   std::vector<double> breaks{profile_.beam_start(), profile_.tip_x()};
-  if (profile_.base_point_x() > profile_.beam_start()) breaks.push_back(profile_.base_point_x());
+  if (profile_.fillet_end_x() > profile_.beam_start()) breaks.push_back(profile_.fillet_end_x());
   if (cracked) {
     if (crack_tip_x_ > breaks[0] && crack_tip_x_ < profile_.tip_x()) breaks.push_back(crack_tip_x_);
-    if (const auto dc = profile_.x_where_thickness(crack_tip_h_); dc && *dc > crack_tip_x_)
-      breaks.push_back(*dc);
+    for (const double dc : profile_.x_where_thickness(crack_tip_h_))
+      if (dc > crack_tip_x_) breaks.push_back(dc);
   }
   std::sort(breaks.begin(), breaks.end());
   Table table;

@@ -8,8 +8,8 @@
 
 namespace gearbench::stiffness {
 
-ToothProfile::ToothProfile(const geometry::GearPairGeometry& pair, int gear, BeamStart start)
-    : start_(start) {
+ToothProfile::ToothProfile(const geometry::GearPairGeometry& pair, int gear, ToothModel model)
+    : model_(model) {
   const auto& g = pair.pair();
   const auto i = static_cast<std::size_t>(gear);
   const auto& radii = pair.radii(gear);
@@ -27,31 +27,49 @@ ToothProfile::ToothProfile(const geometry::GearPairGeometry& pair, int gear, Bea
 
   alpha_start_ = -alpha2_;
   x0_ = xB_;
-  if (start_ != BeamStart::base_circle && Rf_ >= Rb_)
+  const bool improved = model_.start == BeamStart::improved;
+  if (improved && model_.fillet == Fillet::trochoid) {
+    build_trochoid(pair, gear);
+  } else if (model_.start != BeamStart::base_circle && Rf_ >= Rb_) {
     // The beam starts on the involute at the root circle: r(α)² = R_b²[1 + (α + α_2)²].
     alpha_start_ = std::sqrt(Rf_ * Rf_ / (Rb_ * Rb_) - 1.0) - alpha2_;
+  }
   tabulate_involute();
-  if (start_ == BeamStart::base_circle) return;
-  if (Rf_ >= Rb_) {
-    x0_ = involute_x(alpha_start_);
-  } else if (start_ == BeamStart::improved) {
-    // Arc centred at (x_B, h_B + ρ), tangent to the root circle (docs/stiffness-model.md).
-    rho_ = (Rb_ * Rb_ - Rf_ * Rf_) / (2.0 * (Rf_ - hB_));
-    x0_ = xB_ * Rf_ / (Rf_ + rho_);
-    // The fillets of neighbouring teeth meet on the tooth-space centre line (polar angle
-    // π/z): if the arc reaches past it before touching the root circle, the beam starts
-    // where it crosses that line (the polar angle falls monotonically from x_0 to x_B).
-    const double half_pitch_angle = std::numbers::pi / pair.pair().teeth[i];
-    if (std::atan2(half_thickness(x0_), x0_) > half_pitch_angle) {
-      double lo = x0_, hi = xB_;
-      for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * xB_; ++iteration) {
-        const double mid = 0.5 * (lo + hi);
-        (std::atan2(half_thickness(mid), mid) > half_pitch_angle ? lo : hi) = mid;
-      }
-      x0_ = hi;
-    }
-  } else {
+  fillet_end_x_ = involute_x(alpha_start_);
+  if (trochoid_ || model_.start == BeamStart::base_circle) return;
+  if (Rf_ >= Rb_)
+    x0_ = fillet_end_x_;
+  else if (improved)
+    build_circular_arc(pair, gear);
+  else
     x0_ = std::sqrt(Rf_ * Rf_ - hB_ * hB_);  // constant thickness h_B down to the root circle
+}
+
+// The generated fillet runs from the root circle to the form circle, where the involute
+// starts (docs/stiffness-model.md, "The generated fillet"); R_f against R_b does not matter.
+void ToothProfile::build_trochoid(const geometry::GearPairGeometry& pair, int gear) {
+  trochoid_.emplace(pair, gear);
+  x0_ = trochoid_->root_point().x;
+  const auto form = trochoid_->form_point();
+  const double form_radius = std::hypot(form.x, form.h);
+  alpha_start_ = std::sqrt(std::max(form_radius * form_radius / (Rb_ * Rb_) - 1.0, 0.0)) - alpha2_;
+}
+
+// Arc centred at (x_B, h_B + ρ), tangent to the root circle (docs/stiffness-model.md).
+void ToothProfile::build_circular_arc(const geometry::GearPairGeometry& pair, int gear) {
+  rho_ = (Rb_ * Rb_ - Rf_ * Rf_) / (2.0 * (Rf_ - hB_));
+  x0_ = xB_ * Rf_ / (Rf_ + rho_);
+  // The fillets of neighbouring teeth meet on the tooth-space centre line (polar angle
+  // π/z): if the arc reaches past it before touching the root circle, the beam starts
+  // where it crosses that line (the polar angle falls monotonically from x_0 to x_B).
+  const double half_pitch_angle = std::numbers::pi / pair.pair().teeth[static_cast<std::size_t>(gear)];
+  if (std::atan2(half_thickness(x0_), x0_) > half_pitch_angle) {
+    double lo = x0_, hi = xB_;
+    for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * xB_; ++iteration) {
+      const double mid = 0.5 * (lo + hi);
+      (std::atan2(half_thickness(mid), mid) > half_pitch_angle ? lo : hi) = mid;
+    }
+    x0_ = hi;
   }
 }
 
@@ -110,22 +128,36 @@ double ToothProfile::involute_alpha_at(double x) const {
 }
 
 double ToothProfile::half_thickness(double x) const {
-  if (x >= xB_ || start_ == BeamStart::base_circle || Rf_ >= Rb_)
-    return involute_h(involute_alpha_at(x));
-  if (start_ == BeamStart::straight) return hB_;
+  if (x >= fillet_end_x_ || model_.start == BeamStart::base_circle) return involute_h(involute_alpha_at(x));
+  if (trochoid_) return trochoid_->half_thickness(x);
+  if (model_.start == BeamStart::straight) return hB_;
   const double dx = x - xB_;
   return hB_ + rho_ - std::sqrt(rho_ * rho_ - dx * dx);  // seed 003 eq. 1 (arc)
 }
 
-std::optional<double> ToothProfile::x_where_thickness(double value) const {
-  // h(x) decreases monotonically from the beam start to the tip.
-  double lo = x0_, hi = tip_.x;
-  if (!(half_thickness(lo) > value && half_thickness(hi) < value)) return std::nullopt;
-  for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * hi; ++iteration) {
-    const double mid = 0.5 * (lo + hi);
-    (half_thickness(mid) > value ? lo : hi) = mid;
+// h(x) is smooth on each piece and has few extrema: a scan at 512 points brackets every
+// crossing that matters to a quadrature break point, and bisection pins each one down.
+std::vector<double> ToothProfile::x_where_thickness(double value) const {
+  constexpr int samples = 512;
+  std::vector<double> crossings;
+  const auto above = [&](double x) { return half_thickness(x) > value; };
+  double a = x0_;
+  bool above_a = above(a);
+  for (int k = 1; k <= samples; ++k) {
+    const double b = x0_ + (tip_.x - x0_) * k / samples;
+    const bool above_b = above(b);
+    if (above_a != above_b) {
+      double lo = a, hi = b;
+      for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * hi; ++iteration) {
+        const double mid = 0.5 * (lo + hi);
+        (above(mid) == above_a ? lo : hi) = mid;
+      }
+      crossings.push_back(0.5 * (lo + hi));
+    }
+    a = b;
+    above_a = above_b;
   }
-  return 0.5 * (lo + hi);
+  return crossings;
 }
 
 }  // namespace gearbench::stiffness

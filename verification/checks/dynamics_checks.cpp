@@ -193,6 +193,7 @@ CrackRuns compute_crack_runs(const CheckContext& ctx) {
   const auto c = seed003(ctx);
   const geometry::GearPairGeometry g(c.pair);
   Spur6Options healthy;
+  healthy.fillet = stiffness::Fillet::circular_arc;  // seed 003's tooth model (its eq. 1, as read here)
   healthy.runup_cycles = 2 * c.pair.teeth[0];
   healthy.record_cycles = 2 * c.pair.teeth[0];
   Spur6Options cracked = healthy;

@@ -17,6 +17,7 @@
 #include "fe_tooth/cantilever.h"
 #include "fe_tooth/fe_tooth_stiffness.h"
 #include "stiffness/pair_stiffness.h"
+#include "stiffness_pairs.h"
 
 namespace gearbench::verification {
 namespace {
@@ -47,7 +48,7 @@ Comparison compare(const model::GearPair& pair, const std::array<model::Material
   const fe::FeToothStiffness model(pair, materials, options);
   const geometry::GearPairGeometry g(pair);
   const std::array<double, 2> bore{0.5 * g.radii(0).root, 0.5 * g.radii(1).root};
-  const stiffness::PairStiffness energy(g, materials, stiffness::BeamStart::improved, bore, std::nullopt, true);
+  const stiffness::PairStiffness energy(g, materials, stiffness::ToothModel{}, bore, std::nullopt, true);
   Comparison c;
   const auto& path = model.path();
   c.path_mismatch = std::abs(path.A - g.path().A) + std::abs(path.E - g.path().E);
@@ -88,15 +89,6 @@ const std::invoke_result_t<F>& cached(const std::string& name, F&& make) {
   return it->second;
 }
 
-model::GearPair spur(int z1, int z2, double module_mm, double width_mm) {
-  model::GearPair g;
-  g.teeth = {z1, z2};
-  g.normal_module = module_mm * 1e-3;
-  g.normal_pressure_angle = 20.0 * M_PI / 180.0;
-  g.face_width = width_mm * 1e-3;
-  return g;
-}
-
 struct PairCase {
   std::string name;
   Tier tier;
@@ -104,8 +96,6 @@ struct PairCase {
   std::function<Comparison(const CheckContext&)> make;
   double recorded_pair, recorded_tooth;  ///< max |FE/energy − 1| reached (2026-11-22)
 };
-
-const std::array<model::Material, 2> steel{model::Material{206e9, 0.3, 7850}, model::Material{206e9, 0.3, 7850}};
 
 const std::vector<PairCase>& pair_cases() {
   static const std::vector<PairCase> cases{
@@ -123,9 +113,9 @@ const std::vector<PairCase>& pair_cases() {
          return compare(c.gear_pair, *c.materials, 5);
        },
        0.0876, 0.1100},
-      {"z19_48_m3_2", Tier::full, 9, [](const CheckContext&) { return compare(spur(19, 48, 3.2, 16), steel, 9); },
+      {"z19_48_m3_2", Tier::full, 9, [](const CheckContext&) { return compare(spur_pair(19, 48, 3.2, 16), steel206, 9); },
        0.2158, 0.2309},
-      {"z62_62_m2", Tier::full, 9, [](const CheckContext&) { return compare(spur(62, 62, 2.0, 20), steel, 9); },
+      {"z62_62_m2", Tier::full, 9, [](const CheckContext&) { return compare(spur_pair(62, 62, 2.0, 20), steel206, 9); },
        0.2373, 0.2161},
   };
   return cases;
@@ -241,6 +231,10 @@ struct CrackSweep {
   double fe_seconds = 0.0;
 };
 
+/// The cracked tooth is compared on seed 003's own tooth model, the circular-arc fillet, as
+/// the seed 003 crack reproduction in stiffness_checks.cpp.
+constexpr stiffness::ToothModel seed003_tooth{stiffness::BeamStart::improved, stiffness::Fillet::circular_arc};
+
 CrackSweep crack_sweep(const model::GearCase& gc, const std::vector<double>& lengths,
                        const std::function<std::vector<double>(const fe::ContactPath&)>& positions, double tolerance) {
   const auto& pair = gc.gear_pair;
@@ -262,7 +256,7 @@ CrackSweep crack_sweep(const model::GearCase& gc, const std::vector<double>& len
     if (c.s.empty()) c.s = positions(model.path());
     std::optional<stiffness::GearCrack> crack;
     if (q > 0.0) crack = stiffness::GearCrack{{stiffness::Crack::Type::pitch, q, angle}, 0};
-    const stiffness::PairStiffness energy(g, materials, stiffness::BeamStart::improved, bore, crack, true);
+    const stiffness::PairStiffness energy(g, materials, seed003_tooth, bore, crack, true);
     std::vector<double> fe_loss, em_loss, tooth;
     for (std::size_t i = 0; i < c.s.size(); ++i) {
       const auto pinion = model.tooth_compliance(0, c.s[i], false, 0.0, q > 0.0 ? &healthy_pinion[i] : nullptr);

@@ -11,6 +11,7 @@
 #include "closed_form/sainsot_foundation.h"
 #include "quadrature/energy_quadrature.h"
 #include "stiffness/mesh_stiffness.h"
+#include "stiffness_pairs.h"
 
 namespace gearbench::verification {
 namespace {
@@ -45,17 +46,32 @@ stiffness::GearCrack root_crack(double length_mm) {
 
 // --- GSL quadrature agreement ------------------------------------------------------------
 
-reference::QuadBeamStart quad_start(stiffness::BeamStart s) {
-  switch (s) {
+constexpr stiffness::ToothModel arc{stiffness::BeamStart::improved, stiffness::Fillet::circular_arc};
+constexpr stiffness::ToothModel trochoid{stiffness::BeamStart::improved, stiffness::Fillet::trochoid};
+
+reference::QuadBeamStart quad_start(stiffness::ToothModel m) {
+  switch (m.start) {
     case stiffness::BeamStart::straight: return reference::QuadBeamStart::straight;
     case stiffness::BeamStart::base_circle: return reference::QuadBeamStart::base_circle;
-    default: return reference::QuadBeamStart::improved;
+    default:
+      return m.fillet == stiffness::Fillet::trochoid ? reference::QuadBeamStart::trochoid
+                                                     : reference::QuadBeamStart::circular_arc;
   }
+}
+
+/// Unshifted-wheel spur pairs beside seed 003 for the trochoid's agreement: R_f above R_b
+/// (62/62), and a shifted pinion on ISO 53 profile D (h_fP 1.4, ρ_fP 0.39).
+StiffnessCase z62_62(const CheckContext&) { return {spur_pair(62, 62, 2.0, 20.0), steel206}; }
+StiffnessCase z19_48_profile_d(const CheckContext&) {
+  model::GearPair g = spur_pair(19, 48, 3.2, 16.0, 0.3, 0.0);
+  g.dedendum_coef = 1.4;
+  g.root_radius_coef = 0.39;
+  return {g, steel206};
 }
 
 /// Largest relative difference of bending, shear and axial compliance between production
 /// and the GSL reference, over both gears and 41 positions along A..E.
-CheckValue quadrature_agreement(const StiffnessCase& c, stiffness::BeamStart start,
+CheckValue quadrature_agreement(const StiffnessCase& c, stiffness::ToothModel start,
                                 const std::optional<stiffness::GearCrack>& crack) {
   const GearPairGeometry g(c.pair);
   const stiffness::PairStiffness production(g, c.materials, start,
@@ -98,44 +114,48 @@ const std::string gsl_why =
     "exact to ~1e-12 on smooth pieces; 1e-6 is the issue's bar and leaves room for the "
     "root-finding of the break points";
 
-void register_quadrature_check(const std::string& tag, stiffness::BeamStart start,
-                               std::optional<stiffness::GearCrack> crack) {
+void register_quadrature_check(const std::string& tag, stiffness::ToothModel start,
+                               std::optional<stiffness::GearCrack> crack,
+                               StiffnessCase (*make)(const CheckContext&) = seed003) {
   Registry::instance().add(CheckSpec{
       .id = "stiffness.gsl." + tag, .section = section, .solver = solver,
       .reference = "GSL quadrature (Tian parametrisation)",
       .quantity = "max relative difference of k_b, k_s, k_a (both gears, 41 positions)",
       .unit = "-", .tolerance = {1e-6, 0}, .justification = gsl_why, .tier = Tier::fast,
-      .run = [start, crack](const CheckContext& ctx) { return quadrature_agreement(seed003(ctx), start, crack); }});
+      .run = [start, crack, make](const CheckContext& ctx) { return quadrature_agreement(make(ctx), start, crack); }});
 }
 
 // The fillet foundation and Hertz terms: the same closed forms, but on the reference's own
 // beam start, load point and load angle (the geometry is what can go wrong).
-const RegisterCheck foundation_agreement(CheckSpec{
-    .id = "stiffness.gsl.foundation", .section = section, .solver = solver,
-    .reference = "Sainsot on the reference's tooth geometry",
-    .quantity = "max relative difference of 1/k_f (both gears, 41 positions)", .unit = "-",
-    .tolerance = {1e-9, 0},
-    .justification = "one closed form on two independently derived geometries (Brent roots to 1e-14)",
-    .tier = Tier::fast, .run = [](const CheckContext& ctx) {
-      const auto c = seed003(ctx);
-      const GearPairGeometry g(c.pair);
-      const std::array<double, 2> bore{0.5 * g.radii(0).root, 0.5 * g.radii(1).root};
-      const stiffness::PairStiffness production(g, c.materials, stiffness::BeamStart::improved, bore,
-                                                std::nullopt, true);
-      double worst = 0.0;
-      const auto& p = g.path();
-      for (int i = 0; i <= 40; ++i) {
-        const double s = p.A + (p.E - p.A) * i / 40.0;
-        const auto prod = production.compliance(s);
-        for (int gear = 0; gear < 2; ++gear) {
-          const auto geometry = reference::load_geometry_quadrature(c.pair, gear, s, reference::QuadBeamStart::improved);
-          const double ref = reference::sainsot_foundation_compliance(
-              geometry, bore[static_cast<std::size_t>(gear)], c.materials[static_cast<std::size_t>(gear)].youngs_modulus, 1.0);
-          worst = std::max(worst, std::abs(prod.foundation[static_cast<std::size_t>(gear)] - ref) / std::abs(ref));
+void register_foundation_check(const std::string& tag, stiffness::ToothModel model,
+                               StiffnessCase (*make)(const CheckContext&)) {
+  Registry::instance().add(CheckSpec{
+      .id = "stiffness.gsl.foundation." + tag, .section = section, .solver = solver,
+      .reference = "Sainsot on the reference's tooth geometry",
+      .quantity = "max relative difference of 1/k_f (both gears, 41 positions)", .unit = "-",
+      .tolerance = {1e-9, 0},
+      .justification = "one closed form on two independently derived geometries (Brent roots to 1e-14)",
+      .tier = Tier::fast, .run = [model, make](const CheckContext& ctx) {
+        const auto c = make(ctx);
+        const GearPairGeometry g(c.pair);
+        const std::array<double, 2> bore{0.5 * g.radii(0).root, 0.5 * g.radii(1).root};
+        const stiffness::PairStiffness production(g, c.materials, model, bore, std::nullopt, true);
+        double worst = 0.0;
+        const auto& p = g.path();
+        for (int i = 0; i <= 40; ++i) {
+          const double s = p.A + (p.E - p.A) * i / 40.0;
+          const auto prod = production.compliance(s);
+          for (int gear = 0; gear < 2; ++gear) {
+            const auto geometry = reference::load_geometry_quadrature(c.pair, gear, s, quad_start(model));
+            const double ref = reference::sainsot_foundation_compliance(
+                geometry, bore[static_cast<std::size_t>(gear)], c.materials[static_cast<std::size_t>(gear)].youngs_modulus,
+                1.0);
+            worst = std::max(worst, std::abs(prod.foundation[static_cast<std::size_t>(gear)] - ref) / std::abs(ref));
+          }
         }
-      }
-      return CheckValue{worst, 0.0};
-    }});
+        return CheckValue{worst, 0.0};
+      }});
+}
 
 const RegisterCheck hertz_agreement(CheckSpec{
     .id = "stiffness.gsl.hertz", .section = section, .solver = solver,
@@ -144,19 +164,28 @@ const RegisterCheck hertz_agreement(CheckSpec{
     .tier = Tier::fast, .run = [](const CheckContext& ctx) {
       const auto c = seed003(ctx);
       const GearPairGeometry g(c.pair);
-      const stiffness::PairStiffness production(g, c.materials, stiffness::BeamStart::improved,
+      const stiffness::PairStiffness production(g, c.materials, stiffness::ToothModel{},
                                                 {0.5 * g.radii(0).root, 0.5 * g.radii(1).root}, std::nullopt, true);
       const double ref = reference::hertz_compliance_quadrature(c.materials[0], c.materials[1], 1.0);
       return CheckValue{std::abs(production.compliance(g.path().C).hertz - ref) / ref, 0.0};
     }});
 
 const bool quadrature_checks = [] {
-  register_quadrature_check("improved", stiffness::BeamStart::improved, std::nullopt);
-  register_quadrature_check("straight", stiffness::BeamStart::straight, std::nullopt);
-  register_quadrature_check("base_circle", stiffness::BeamStart::base_circle, std::nullopt);
+  register_quadrature_check("improved", arc, std::nullopt);
+  register_quadrature_check("straight", {stiffness::BeamStart::straight}, std::nullopt);
+  register_quadrature_check("base_circle", {stiffness::BeamStart::base_circle}, std::nullopt);
   for (double q : {1.0, 2.0, 2.5})
-    register_quadrature_check(fmt::format("pitch_crack_{}mm", q), stiffness::BeamStart::improved, pitch_crack(q));
-  register_quadrature_check("root_crack_1mm", stiffness::BeamStart::improved, root_crack(1.0));
+    register_quadrature_check(fmt::format("pitch_crack_{}mm", q), arc, pitch_crack(q));
+  register_quadrature_check("root_crack_1mm", arc, root_crack(1.0));
+  register_quadrature_check("trochoid", trochoid, std::nullopt);
+  register_quadrature_check("trochoid.z62_62", trochoid, std::nullopt, z62_62);
+  register_quadrature_check("trochoid.z19_48_x0.3_iso53_D", trochoid, std::nullopt, z19_48_profile_d);
+  register_quadrature_check("trochoid.pitch_crack_2.5mm", trochoid, pitch_crack(2.5));
+  register_quadrature_check("trochoid.root_crack_1mm", trochoid, root_crack(1.0));
+  register_foundation_check("improved", arc, seed003);
+  register_foundation_check("trochoid", trochoid, seed003);
+  register_foundation_check("trochoid.z62_62", trochoid, z62_62);
+  register_foundation_check("trochoid.z19_48_x0.3_iso53_D", trochoid, z19_48_profile_d);
   return true;
 }();
 
@@ -172,17 +201,7 @@ const IsoPair iso_pairs[] = {{17, 34, 0.3, 0.0},  {17, 34, 0.6, 0.0},  {25, 50, 
                              {40, 80, 0.3, 0.0},  {40, 80, 0.6, 0.0},  {60, 100, 0.0, 0.0},
                              {60, 100, 0.6, 0.0}, {100, 100, -0.3, -0.3}, {100, 100, 0.0, 0.0}};
 
-model::GearPair iso_pair(const IsoPair& p) {
-  model::GearPair g;
-  g.teeth = {p.z1, p.z2};
-  g.normal_module = 2e-3;
-  g.normal_pressure_angle = 20.0 * M_PI / 180.0;
-  g.face_width = 20e-3;
-  g.profile_shift = {p.x1, p.x2};
-  return g;
-}
-
-const std::array<model::Material, 2> steel{model::Material{206e9, 0.3, 7850}, model::Material{206e9, 0.3, 7850}};
+model::GearPair iso_pair(const IsoPair& p) { return spur_pair(p.z1, p.z2, 2.0, 20.0, p.x1, p.x2); }
 
 /// Mean of the single-pair curve over A..E per face width [N/(mm·µm)].
 double mean_single_pair(const stiffness::MeshStiffnessResult& r, double face_width) {
@@ -217,7 +236,7 @@ void register_iso_check(const IsoPair& p, bool mesh) {
         const GearPairGeometry g(pair);
         MeshStiffnessOptions o;
         o.positions = 60;
-        const auto r = MeshStiffness(g, steel, o).solve();
+        const auto r = MeshStiffness(g, steel206, o).solve();
         const auto iso = reference::iso6336_stiffness(pair);
         if (mesh) return CheckValue{r.mean_per_face_width(), iso.c_gamma_alpha};
         return CheckValue{max_single_pair(r, pair.face_width), iso.c_prime,
@@ -238,7 +257,9 @@ const bool iso_checks = [] {
 
 // Root circle crossing the base circle (z 41, α 20°): the dedendum is varied by ±1e-7
 // relative around R_f = R_b. The compliance is Lipschitz in R_f with a sensitivity below
-// ~10 per unit relative change, so a jump would show far above 1e-5.
+// ~10 per unit relative change, so a jump would show far above 1e-5. The circular-arc fillet
+// switches branch there (arc below, involute from the root circle above); the generated
+// fillet has no branch, and the check runs on the arc.
 const RegisterCheck continuity(CheckSpec{
     .id = "stiffness.continuity_root_base", .section = section, .solver = solver,
     .reference = "the model itself (branch switch)",
@@ -252,7 +273,7 @@ const RegisterCheck continuity(CheckSpec{
       auto compliance = [&](double coef) {
         pair.dedendum_coef = coef;
         const GearPairGeometry g(pair);
-        const stiffness::PairStiffness k(g, steel, stiffness::BeamStart::improved,
+        const stiffness::PairStiffness k(g, steel206, arc,
                                          {0.5 * g.radii(0).root, 0.5 * g.radii(1).root}, std::nullopt, true);
         return k.compliance(g.path().C).total();
       };
@@ -277,16 +298,16 @@ double crack_change(const CheckContext& ctx, double length_mm) {
 }
 
 // Continuity at zero crack length. A crack of exactly 0 is no crack (the solver drops it), so
-// the limit is probed with 1e-6 mm. Measured: 1.5e-10, while the 0.5 mm crack changes the
-// stiffness by 2.0 %, whose linear share at 1e-6 mm would be 3.9e-8 (both in the
-// diagnostics): the change vanishes faster than linearly. 1e-8 allows ~60× the measured
-// value and still fails a jump at q → 0 or any change of linear order.
+// the limit is probed with 1e-6 mm. Measured on the generated fillet: 7.5e-14 (1.5e-10 on the
+// circular arc), while the 0.5 mm crack changes the stiffness by 1.9 %, whose linear share at
+// 1e-6 mm would be 3.8e-8 (both in the diagnostics): the change vanishes faster than
+// linearly. 1e-8 still fails a jump at q → 0 or any change of linear order.
 const RegisterCheck crack_continuity(CheckSpec{
     .id = "stiffness.crack_length_continuity", .section = section, .solver = solver,
     .reference = "the healthy tooth",
     .quantity = "max relative difference of the single-pair stiffness, crack 1e-6 mm vs healthy",
     .unit = "-", .tolerance = {1e-8, 0},
-    .justification = "measured 1.5e-10; the linear share of the 0.5 mm crack's 2 % change would be 3.9e-8, "
+    .justification = "measured 7.5e-14; the linear share of the 0.5 mm crack's 1.9 % change would be 3.8e-8, "
                      "so 1e-8 fails a jump or any change of linear order at q → 0",
     .tier = Tier::fast, .run = [](const CheckContext& ctx) {
       const double half_mm = crack_change(ctx, 0.5);
@@ -348,7 +369,7 @@ const RegisterCheck helical_spline(CheckSpec{
       MeshStiffnessOptions o;
       o.positions = 24;
       const auto r = MeshStiffness(g, materials, o).solve();
-      const stiffness::PairStiffness direct(g, materials, o.beam_start,
+      const stiffness::PairStiffness direct(g, materials, {o.beam_start, o.fillet},
                                             {0.5 * g.radii(0).root, 0.5 * g.radii(1).root}, std::nullopt, true);
       const double pb = g.base_pitch_transverse();
       const double w = pair.face_width / o.slices;
@@ -398,11 +419,18 @@ struct CrackDrops {
   double shear = 0.0;  ///< max relative drop of the cracked tooth's shear stiffness
 };
 
+/// Seed 003's own tooth model: the circular-arc fillet (its eq. 1, as gearbench reads it).
+MeshStiffnessOptions seed003_options(std::optional<stiffness::GearCrack> crack) {
+  MeshStiffnessOptions o;
+  o.fillet = stiffness::Fillet::circular_arc;
+  o.crack = crack;
+  return o;
+}
+
 CrackDrops crack_drops(const CheckContext& ctx, double length_mm) {
   const auto c = seed003(ctx);
   const GearPairGeometry g(c.pair);
-  MeshStiffnessOptions healthy, cracked;
-  cracked.crack = pitch_crack(length_mm);
+  const auto healthy = seed003_options(std::nullopt), cracked = seed003_options(pitch_crack(length_mm));
   const auto h = MeshStiffness(g, c.materials, healthy).solve();
   const auto k = MeshStiffness(g, c.materials, cracked).solve();
   CrackDrops d;
@@ -440,9 +468,7 @@ void add_seed003_figures(const CheckContext& ctx, reports::Report& report) {
   const double to_deg = 180.0 / M_PI;
   std::vector<reports::Series> mesh, bending, shear;
   for (double q : {0.0, 1.0, 2.0, 2.5}) {
-    MeshStiffnessOptions o;
-    o.crack = pitch_crack(q);
-    const auto r = MeshStiffness(g, c.materials, o).solve();
+    const auto r = MeshStiffness(g, c.materials, seed003_options(pitch_crack(q))).solve();
     const std::string label = q == 0.0 ? "healthy" : fmt::format("{} mm crack", q);
     mesh.push_back({label, scaled(r.mesh_position, to_deg), scaled(r.mesh_stiffness, 1e-8)});
     const auto roll = scaled(r.path_position, 1.0 / g.radii(0).base * to_deg);
@@ -481,7 +507,7 @@ void add_seed003_figures(const CheckContext& ctx, reports::Report& report) {
   }
   report.notes.push_back({seed_section, fmt::format(
       "Crack at the pitch circle of the pinion, 45°, through the face; improved tooth model "
-      "(docs/stiffness-model.md) with the Sainsot foundation.\n\n"
+      "(docs/stiffness-model.md) with seed 003's circular-arc fillet and the Sainsot foundation.\n\n"
       "| crack [mm] | max drop of mesh stiffness [%] | max drop of shear stiffness [%] |\n"
       "|---|---|---|\n{}\n"
       "The paper reports 14.3 % and 49 % at 2.5 mm. Both are missed, in opposite directions, "
@@ -502,7 +528,7 @@ void add_iso_table(reports::Report& report) {
     const GearPairGeometry g(pair);
     MeshStiffnessOptions o;
     o.positions = 60;
-    const auto r = MeshStiffness(g, steel, o).solve();
+    const auto r = MeshStiffness(g, steel206, o).solve();
     const auto iso = reference::iso6336_stiffness(pair);
     rows += fmt::format("| {}/{} | {}/{} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |\n", p.z1,
                         p.z2, p.x1, p.x2, max_single_pair(r, pair.face_width), iso.c_prime,

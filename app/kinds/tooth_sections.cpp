@@ -1,4 +1,4 @@
-#include "crack_section.h"
+#include "tooth_sections.h"
 
 #include <numbers>
 
@@ -15,6 +15,11 @@ std::optional<stiffness::GearCrack> read_crack(model::ObjectReader& root, int ma
   crack.gear = c.optional_integer("gear", 1, max_gear).value_or(1) - 1;
   c.finish();
   return crack;
+}
+
+stiffness::Fillet read_fillet(model::ObjectReader& root) {
+  const auto name = root.optional_string("fillet", {"trochoid", "circular_arc"}).value_or("trochoid");
+  return name == "circular_arc" ? stiffness::Fillet::circular_arc : stiffness::Fillet::trochoid;
 }
 
 }  // namespace gearbench::app
