@@ -271,6 +271,15 @@ TEST(Cli, StiffnessBadInput) {
       {[](json& j) { j.erase("materials"); }, "materials: missing required key"},
       {[](json& j) { j["beam_start"] = "root"; }, "beam_start = \"root\": allowed values are improved, straight, base_circle"},
       {[](json& j) { j["positions"] = 0; }, "positions = 0: allowed range is [2, 100000]"},
+      {[](json& j) { j["fillet"] = "spline"; }, "fillet = \"spline\": allowed values are trochoid, circular_arc"},
+      {[](json& j) { j["beam_start"] = "straight"; }, "fillet = \"circular_arc\": allowed only with beam_start"},
+      {[](json& j) {
+         j.erase("fillet");
+         j["gear_pair"]["root_radius_coef"] = 0.5;
+       },
+       "gear_pair.root_radius_coef = 0.5: the rack's tip radius does not fit its tooth"},
+      {[](json& j) { j["gear_pair"]["basic_rack"] = "ISO53_E"; },
+       "gear_pair.basic_rack = \"ISO53_E\": allowed values are ISO53_A, ISO53_B, ISO53_C, ISO53_D"},
   };
   int n = 0;
   for (const auto& [edit, expected] : cases) {

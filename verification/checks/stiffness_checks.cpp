@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 
 #include "check_registry.h"
-#include "closed_form/iso6336_stiffness.h"
 #include "closed_form/sainsot_foundation.h"
 #include "quadrature/energy_quadrature.h"
 #include "stiffness/mesh_stiffness.h"
@@ -189,70 +188,6 @@ const bool quadrature_checks = [] {
   return true;
 }();
 
-// --- ISO 6336-1 method B ----------------------------------------------------------------
-
-struct IsoPair {
-  int z1, z2;
-  double x1, x2;
-};
-// z 17…100 and x −0.3…0.6 wherever the pair is free of undercut and interference.
-const IsoPair iso_pairs[] = {{17, 34, 0.3, 0.0},  {17, 34, 0.6, 0.0},  {25, 50, 0.0, 0.0},
-                             {25, 50, 0.3, 0.0},  {25, 50, 0.6, 0.0},  {40, 80, 0.0, 0.0},
-                             {40, 80, 0.3, 0.0},  {40, 80, 0.6, 0.0},  {60, 100, 0.0, 0.0},
-                             {60, 100, 0.6, 0.0}, {100, 100, -0.3, -0.3}, {100, 100, 0.0, 0.0}};
-
-model::GearPair iso_pair(const IsoPair& p) { return spur_pair(p.z1, p.z2, 2.0, 20.0, p.x1, p.x2); }
-
-/// Mean of the single-pair curve over A..E per face width [N/(mm·µm)].
-double mean_single_pair(const stiffness::MeshStiffnessResult& r, double face_width) {
-  double sum = 0.0;
-  for (double k : r.single_pair_stiffness) sum += k;
-  return sum / static_cast<double>(r.single_pair_stiffness.size()) / (face_width * 1e3) * 1e-6;
-}
-
-double max_single_pair(const stiffness::MeshStiffnessResult& r, double face_width) {
-  return *std::max_element(r.single_pair_stiffness.begin(), r.single_pair_stiffness.end()) /
-         (face_width * 1e3) * 1e-6;
-}
-
-/// ISO 6336-1 defines c′ as the maximum stiffness of a single tooth pair per face width and
-/// c_γα as the mean stiffness of the mesh; the energy method is compared quantity for
-/// quantity. ISO method B is an empirical fit (C_M = 0.8 scales theory to measurement,
-/// C_B corrects the rack), so ±20 % is the band for a theory-against-standard comparison.
-void register_iso_check(const IsoPair& p, bool mesh) {
-  Registry::instance().add(CheckSpec{
-      .id = fmt::format("stiffness.iso6336.{}.z{}_{}_x{}_{}", mesh ? "c_gamma_alpha" : "c_prime",
-                        p.z1, p.z2, p.x1, p.x2),
-      .section = section, .solver = solver,
-      .reference = mesh ? "ISO 6336-1 method B c_γα" : "ISO 6336-1 method B c′",
-      .quantity = fmt::format("{} per face width, z {}/{}, x {}/{}",
-                              mesh ? "mean mesh stiffness" : "max single-pair stiffness", p.z1,
-                              p.z2, p.x1, p.x2),
-      .unit = "N/(mm·µm)", .tolerance = {0, 0.2},
-      .justification = "ISO method B is an empirical fit (C_M = 0.8 scales theory to "
-                       "measurement): ±20 % is the band for theory against the standard",
-      .tier = Tier::fast, .run = [p, mesh](const CheckContext&) {
-        const auto pair = iso_pair(p);
-        const GearPairGeometry g(pair);
-        MeshStiffnessOptions o;
-        o.positions = 60;
-        const auto r = MeshStiffness(g, steel206, o).solve();
-        const auto iso = reference::iso6336_stiffness(pair);
-        if (mesh) return CheckValue{r.mean_per_face_width(), iso.c_gamma_alpha};
-        return CheckValue{max_single_pair(r, pair.face_width), iso.c_prime,
-                          {{"c_prime_theoretical", iso.c_prime_theoretical},
-                           {"mean_single_pair", mean_single_pair(r, pair.face_width)}}};
-      }});
-}
-
-const bool iso_checks = [] {
-  for (const auto& p : iso_pairs) {
-    register_iso_check(p, false);
-    register_iso_check(p, true);
-  }
-  return true;
-}();
-
 // --- Model properties ---------------------------------------------------------------------
 
 // Root circle crossing the base circle (z 41, α 20°): the dedendum is varied by ±1e-7
@@ -267,7 +202,7 @@ const RegisterCheck continuity(CheckSpec{
     .unit = "-", .tolerance = {1e-5, 0},
     .justification = "a ±1e-7 relative step in R_f moves a continuous compliance by < 1e-6",
     .tier = Tier::fast, .run = [](const CheckContext&) {
-      auto pair = iso_pair({41, 60, 0.0, 0.0});
+      auto pair = spur_pair(41, 60, 2.0, 20.0);
       const double R = 0.5 * 41 * pair.normal_module;
       const double switch_coef = (R - R * std::cos(pair.normal_pressure_angle)) / pair.normal_module;
       auto compliance = [&](double coef) {
@@ -521,34 +456,8 @@ void add_seed003_figures(const CheckContext& ctx, reports::Report& report) {
       "from the text, so the remaining share of the gap cannot be assigned.", rows)});
 }
 
-void add_iso_table(reports::Report& report) {
-  std::string rows;
-  for (const auto& p : iso_pairs) {
-    const auto pair = iso_pair(p);
-    const GearPairGeometry g(pair);
-    MeshStiffnessOptions o;
-    o.positions = 60;
-    const auto r = MeshStiffness(g, steel206, o).solve();
-    const auto iso = reference::iso6336_stiffness(pair);
-    rows += fmt::format("| {}/{} | {}/{} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |\n", p.z1,
-                        p.z2, p.x1, p.x2, max_single_pair(r, pair.face_width), iso.c_prime,
-                        iso.c_prime_theoretical, mean_single_pair(r, pair.face_width),
-                        r.mean_per_face_width(), iso.c_gamma_alpha);
-  }
-  report.notes.push_back({section, fmt::format(
-      "**Against ISO 6336-1 method B** (m 2 mm, α 20°, b 20 mm, steel, solid blanks), in "
-      "N/(mm·µm). ISO defines c′ as the maximum stiffness of one pair and c_γα as the mesh "
-      "mean, and the checks compare those quantities. The energy method's single-pair "
-      "maximum lies 0.87–1.15 × c′. The single-pair mean over A..E is lower, 0.77–1.02 × c′, "
-      "and leaves the ±20 % band for z ≥ 60. ISO's c′ carries the empirical C_M = 0.8; "
-      "its theoretical c′_th = 1/q′ is listed for reference.\n\n"
-      "| z | x | single-pair max | ISO c′ | ISO c′_th | single-pair mean | mesh mean | ISO c_γα |\n"
-      "|---|---|---|---|---|---|---|---|\n{}", rows)});
-}
-
 const RegisterSection stiffness_section(SectionSpec{
     .id = "stiffness", .tier = Tier::fast, .add = [](const CheckContext& ctx, reports::Report& report) {
-      add_iso_table(report);
       add_seed003_figures(ctx, report);
     }});
 
