@@ -2,6 +2,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "model/case_reader.h"
 #include "model/errors.h"
 #include "support/test_support.h"
@@ -24,8 +26,29 @@ TEST(ObjectReader, ReadsUnitsIntoSI) {
   EXPECT_DOUBLE_EQ(g.normal_module, 2e-3);
   EXPECT_NEAR(g.normal_pressure_angle, 25.0 * M_PI / 180.0, 1e-15);
   EXPECT_DOUBLE_EQ(g.dedendum_coef, 1.25);
-  EXPECT_DOUBLE_EQ(g.root_radius_coef, 0.38);
+  // 25°: the rack tooth is too narrow for ISO 53's ρ_fP 0.38; the default is the full-round
+  // tip radius, (π/4 − h_fP tan α)/(1/cos α − tan α).
+  const double a = 25.0 * M_PI / 180.0;
+  EXPECT_NEAR(g.root_radius_coef, (M_PI / 4 - 1.25 * std::tan(a)) / (1 / std::cos(a) - std::tan(a)), 1e-15);
   EXPECT_FALSE(g.center_distance.has_value());
+}
+
+TEST(ObjectReader, BasicRackProfilesOfIso53) {
+  auto j = spur_pair();
+  j["normal_pressure_angle_deg"] = 20.0;
+  EXPECT_DOUBLE_EQ(read_gear_pair(ObjectReader(j, "gear_pair")).root_radius_coef, 0.38);
+  j["basic_rack"] = "ISO53_D";
+  const auto d = read_gear_pair(ObjectReader(j, "gear_pair"));
+  EXPECT_DOUBLE_EQ(d.dedendum_coef, 1.4);
+  EXPECT_DOUBLE_EQ(d.root_radius_coef, 0.39);
+  j["root_radius_coef"] = 0.3;
+  EXPECT_NE(input_error_of([&] { read_gear_pair(ObjectReader(j, "gear_pair")); })
+                .find("gear_pair.basic_rack = \"ISO53_D\": sets dedendum_coef and root_radius_coef"),
+            std::string::npos);
+  j.erase("root_radius_coef");
+  j["normal_pressure_angle_deg"] = 25.0;
+  EXPECT_NE(input_error_of([&] { read_gear_pair(ObjectReader(j, "gear_pair")); }).find("20 deg pressure angle"),
+            std::string::npos);
 }
 
 TEST(ObjectReader, UnknownKeySuggestsNearest) {

@@ -34,13 +34,15 @@ void check_shift_sum(const GearPair& g, const std::string& key) {
 }
 }  // namespace
 
-namespace {
-/// Tip radius of a full-round rack [m_n]: its two tip rounds meet on the tooth's centre line,
-/// tangent to the flanks (π/4 − h_fP tan α = ρ(1/cos α − tan α)): the largest that fits.
-double full_round_tip_radius(double dedendum_coef, double pressure_angle) {
-  return std::max(0.0, std::numbers::pi / 4.0 - dedendum_coef * std::tan(pressure_angle)) /
-         (1.0 / std::cos(pressure_angle) - std::tan(pressure_angle));
+// A full-round rack's two tip rounds meet on the tooth's centre line, tangent to the flanks:
+// π/4 − h_fP tan α = ρ(1/cos α − tan α), the largest tip radius that fits.
+double default_root_radius_coef(double dedendum_coef, double normal_pressure_angle) {
+  const double full_round = std::max(0.0, std::numbers::pi / 4.0 - dedendum_coef * std::tan(normal_pressure_angle)) /
+                            (1.0 / std::cos(normal_pressure_angle) - std::tan(normal_pressure_angle));
+  return std::min(0.38, full_round);
 }
+
+namespace {
 
 /// ISO 53:1998 basic rack profiles (h_aP 1, α 20°): dedendum h_fP and tip radius ρ_fP in m_n.
 struct RackProfile {
@@ -72,8 +74,7 @@ void read_basic_rack(ObjectReader& s, GearPair& g) {
     return;
   }
   g.dedendum_coef = dedendum.value_or(1.25);
-  g.root_radius_coef =
-      tip_radius.value_or(std::min(0.38, full_round_tip_radius(g.dedendum_coef, g.normal_pressure_angle)));
+  g.root_radius_coef = tip_radius.value_or(default_root_radius_coef(g.dedendum_coef, g.normal_pressure_angle));
 }
 }  // namespace
 

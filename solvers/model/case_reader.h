@@ -11,6 +11,11 @@
 
 namespace gearbench::model {
 
+/// Tip radius ρ_fP* [m_n] of the rack when a case gives none: ISO 53 profile A's 0.38, or for
+/// racks too narrow for it (pressure angles above about 22°, outside ISO 53) the full-round
+/// tip radius, whose two rounds meet on the rack tooth's centre line.
+double default_root_radius_coef(double dedendum_coef, double normal_pressure_angle);
+
 GearPair read_gear_pair(ObjectReader section);
 /// `materials`: one object (both gears) or an array of two.
 std::array<Material, 2> read_materials(ObjectReader& root);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "model/errors.h"
+#include "model/case_reader.h"
 #include "model/gear_pair.h"
 
 namespace gearbench::testing_support {
@@ -18,6 +19,7 @@ inline model::GearPair spur_pair(int z1, int z2, double module_mm, double pressu
   g.normal_module = module_mm * 1e-3;
   g.normal_pressure_angle = pressure_angle_deg * std::numbers::pi / 180.0;
   g.face_width = face_width_mm * 1e-3;
+  g.root_radius_coef = model::default_root_radius_coef(g.dedendum_coef, g.normal_pressure_angle);  // as a case file
   return g;
 }
 
