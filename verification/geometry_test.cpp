@@ -93,6 +93,7 @@ TEST(GearPairGeometry, HelicalContactLineLengthBounds) {
 TEST(Feasibility, UndercutNamesTeethAndMinimum) {
   auto g = seed004();
   g.normal_pressure_angle = 20 * deg;
+  g.root_radius_coef = 0.38;  // ISO 53 A at 20° (seed 004's 25° pair carries the full-round radius)
   g.teeth = {12, 40};
   const auto msg = error_of(g);
   EXPECT_NE(msg.find("gear_pair.teeth[0] = 12: undercut"), std::string::npos) << msg;
