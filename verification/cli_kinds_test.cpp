@@ -132,21 +132,13 @@ TEST(Cli, EhlTransientRunsAndValidates) {
   for (const char* point : {"A", "B", "C", "D", "E"}) EXPECT_TRUE(r["profiles"].contains(point)) << point;
   EXPECT_GT(r["p_max_Pa"].get<double>(), r["reference"]["hertz_pressure_Pa"].get<double>() * 0.8);
 
-  const std::pair<std::string, std::string> bad[] = {
+  expect_patches_refused(small, {
       {R"("time_steps": 2)", "time_steps = 2: allowed range is [4, 100000]"},
       {R"("load_sharing": "stiffness")", "load_sharing"},
       {R"("gear_pair": {"teeth": [22, 32], "normal_module_mm": 2.0, "normal_pressure_angle_deg": 25.0,
           "face_width_mm": 20.0, "helix_angle_deg": 15})", "the pair is helical"},
       {R"("rheology": {"viscosity_model": "eyring"})", "rheology.viscosity_model"},
-  };
-  int n = 0;
-  for (const auto& [patch, expected] : bad) {
-    auto j = small;
-    j.merge_patch(json::parse("{" + patch + "}"));
-    const auto b = run_gearbench("run " + write_case("ehl_transient_bad_" + std::to_string(n++), j.dump()));
-    EXPECT_EQ(b.exit_code, 2) << patch << "\n" << b.err;
-    EXPECT_NE(b.err.find(expected), std::string::npos) << b.err;
-  }
+  }, "ehl_transient_bad");
   auto no_oil = small;
   no_oil.erase("lubricant");
   const auto b = run_gearbench("run " + write_case("ehl_transient_no_oil", no_oil.dump()));
@@ -190,19 +182,11 @@ TEST(Cli, OilFilmStiffnessRunsAndValidates) {
     EXPECT_GT(f.get<double>(), 0.0);
     EXPECT_LT(f.get<double>(), 1.0);
   }
-  const std::pair<std::string, std::string> bad[] = {
+  expect_patches_refused(small, {
       {R"("perturbation": 0.5)", "perturbation = 0.5: allowed"},
       {R"("positions": 0)", "positions = 0: allowed range is [1, 10000]"},
       {R"("load_sharing": "stiffness")", "load_sharing"},
-  };
-  int n = 0;
-  for (const auto& [patch, expected] : bad) {
-    auto j = small;
-    j.merge_patch(json::parse("{" + patch + "}"));
-    const auto b = run_gearbench("run " + write_case("oil_film_bad_" + std::to_string(n++), j.dump()));
-    EXPECT_EQ(b.exit_code, 2) << patch << "\n" << b.err;
-    EXPECT_NE(b.err.find(expected), std::string::npos) << b.err;
-  }
+  }, "oil_film_bad");
 }
 
 // The double-involute form of the kind on a coarse grid (two instants, one Gauss point per
@@ -224,22 +208,14 @@ TEST(Cli, OilFilmStiffnessDoubleInvoluteRunsAndValidates) {
   }
   EXPECT_GT(r["mean_film_stiffness_ratio"].get<double>(), 0.0);
   EXPECT_LT(r["geometry"]["root_zone_m"][1].get<double>(), r["geometry"]["tip_zone_m"][0].get<double>());
-  const std::pair<std::string, std::string> bad[] = {
+  expect_patches_refused(small, {
       {R"("double_involute": {"waist_root_depth": 0.1})", "double_involute.waist_root_depth = 0.1: allowed range is"},
       {R"("double_involute": {"root_tangential_shift": 0.3})", "double_involute.root_tangential_shift = 0.3"},
       {R"("tooth_form": "involute")", "double_involute: the rack section is read only with tooth_form"},
       {R"("tooth_form": "stepped")", "tooth_form"},
       {R"("mesh_samples": 0)", "mesh_samples = 0: allowed range is [1, 10000]"},
       {R"("gear_pair": {"helix_angle_deg": 0})", "no tooth pair is in contact"},
-  };
-  int n = 0;
-  for (const auto& [patch, expected] : bad) {
-    auto j = small;
-    j.merge_patch(json::parse("{" + patch + "}"));
-    const auto b = run_gearbench("run " + write_case("double_involute_bad_" + std::to_string(n++), j.dump()));
-    EXPECT_EQ(b.exit_code, 2) << patch << "\n" << b.err;
-    EXPECT_NE(b.err.find(expected), std::string::npos) << b.err;
-  }
+  }, "double_involute_bad");
 }
 
 TEST(Cli, DynamicsRunsAndValidates) {
@@ -398,21 +374,13 @@ TEST(Cli, ThermalEhlRunsAndValidates) {
   EXPECT_TRUE(r.contains("friction_coefficient_eyring"));
   EXPECT_EQ(r["temperature_field"]["film_K"].size(), r["profile"]["x_m"].size());
 
-  const std::pair<std::string, std::string> bad[] = {
+  expect_patches_refused(point, {
       {R"("lubricant": {"nu40_mm2_s": 320})", "give either viscosity_Pa_s"},
       {R"("inlet_temperature_K": 100)", "inlet_temperature_K = 100: allowed range is [200, 600]"},
       {R"("solids": {"density_kg_m3": [7850]})", "solids.density_kg_m3"},
       {R"("thermal": {"heat_sources": "radiation"})", "thermal.heat_sources"},
       {R"("thermal": {"film_nodes": 2})", "thermal.film_nodes = 2"},
-  };
-  int n = 0;
-  for (const auto& [patch, expected] : bad) {
-    auto j = point;
-    j.merge_patch(json::parse("{" + patch + "}"));
-    const auto b = run_gearbench("run " + write_case("tehl_bad_" + std::to_string(n++), j.dump()));
-    EXPECT_EQ(b.exit_code, 2) << patch << "\n" << b.err;
-    EXPECT_NE(b.err.find(expected), std::string::npos) << b.err;
-  }
+  }, "tehl_bad");
 
   auto capped = point;
   capped["thermal"] = {{"max_iterations", 1}};

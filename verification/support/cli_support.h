@@ -8,8 +8,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <sys/wait.h>
+#include <utility>
 #include <unistd.h>
 #include <vector>
 
@@ -100,6 +102,22 @@ inline void expect_one_error_line(const Outcome& o, const std::string& expected)
   EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << "one line: " << o.err;
   EXPECT_NE(o.err.find(expected), std::string::npos) << o.err;
   EXPECT_TRUE(o.out.empty());
+}
+
+/// Each (patch, expected) of `bad` merged into `base` (`patch` holds the members of a JSON
+/// object, without braces) is refused with exit 2 and an error naming `expected`. The case
+/// files are named `name`_0, `name`_1, …
+inline void expect_patches_refused(const nlohmann::json& base,
+                                   const std::vector<std::pair<std::string, std::string>>& bad,
+                                   const std::string& name) {
+  int n = 0;
+  for (const auto& [patch, expected] : bad) {
+    auto j = base;
+    j.merge_patch(nlohmann::json::parse("{" + patch + "}"));
+    const auto o = run_gearbench("run " + write_case(name + "_" + std::to_string(n++), j.dump()));
+    EXPECT_EQ(o.exit_code, 2) << patch << "\n" << o.err;
+    EXPECT_NE(o.err.find(expected), std::string::npos) << o.err;
+  }
 }
 
 }  // namespace gearbench::testing_support
