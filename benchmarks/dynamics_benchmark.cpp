@@ -77,7 +77,7 @@ struct SpurProblem {
       const reference::Spur6Parameters r{p.m1, p.m2, p.I1, p.I2, p.rb1, p.rb2, p.k_bearing, p.k_bearing,
                                          p.c_bearing, p.c_bearing, p.T1, p.mu, p.zeta_mesh, p.mean_mesh_stiffness,
                                          p.A, p.C, p.E, p.T1T2, p.pbt, p.contact_speed,
-                                         [&d](double x) { return d->pair_stiffness(x); }};
+                                         [&d](double x) { return d->mesh_excitation().pair_stiffness(x); }};
       const double T = p.pbt / p.contact_speed;
       reference::Spur6State y0{};
       const auto s0 = d->static_state();

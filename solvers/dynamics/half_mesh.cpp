@@ -14,10 +14,6 @@
 
 namespace gearbench::dynamics {
 
-namespace {
-constexpr int curve_nodes = 1025;  // nodes of the pair-stiffness spline on A..E (as MeshStiffness)
-}  // namespace
-
 // ---- FourierSeries ----------------------------------------------------------------------
 
 FourierSeries::FourierSeries(double period, const std::vector<double>& y, int harmonics)
@@ -70,48 +66,16 @@ void HalfMeshOptions::validate() const {
 }
 
 namespace {
-// Sliding reverses at the pitch point: λ = +1 beyond C (the pinion flank slides ahead),
-// −1 before it (docs/dynamics-model.md, "Friction").
-double sliding_sign(double s, const geometry::PathOfContact& path) { return s > path.C ? 1.0 : (s < path.C ? -1.0 : 0.0); }
-
 constexpr int load_levels = 12;  // F_l = (l/4)·F_nom, l = 0..12
 }  // namespace
-
-// Arms ρ1 = s, ρ2 = T1T2 − s; `factor` is μ_c/scale of the friction law (1 for a constant μ).
-void HalfMesh::Sums::add(double k_pair, double s, double lambda, const geometry::PathOfContact& path, double factor) {
-  k += k_pair;
-  k_rho1 += k_pair * lambda * s * factor;
-  k_rho2 += k_pair * lambda * (path.T2 - s) * factor;
-}
-
-HalfMesh::Sums HalfMesh::loaded_sums(std::span<const Contact> contacts, double force, double length) const {
-  double total = 0.0;
-  for (const Contact& c : contacts) total += c.k;
-  Sums sums;
-  for (const Contact& c : contacts)
-    sums.add(c.k, c.s, c.lambda, geometry_.path(), friction_.factor(c.s, std::abs(force) * c.k / total / length));
-  return sums;
-}
 
 HalfMesh::HalfMesh(const geometry::GearPairGeometry& geometry, const std::array<model::Material, 2>& materials,
                    const model::OperatingPoint& operating, HalfMeshOptions options)
     : geometry_(geometry),
       options_((options.validate(), options)),
-      pair_(geometry, materials, stiffness::ToothModel{stiffness::BeamStart::improved, options_.fillet},
-            {0.5 * geometry.radii(0).root, 0.5 * geometry.radii(1).root}, std::nullopt, true),
+      spur_(geometry, materials, operating.pinion_speed, options_.fillet),
       friction_(geometry, materials, operating, options_.friction_coefficient, options_.friction_law) {
-  const double pinion_speed = operating.pinion_speed;
-  if (!(pinion_speed > 0.0))
-    throw InputError(fmt::format("operating.pinion_speed_rpm = {}: must be > 0", pinion_speed * 30.0 / M_PI));
-  const auto& path = geometry_.path();
-  std::vector<double> s(curve_nodes), k(curve_nodes);
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    s[i] = path.A + (path.E - path.A) * static_cast<double>(i) / (curve_nodes - 1);
-    k[i] = geometry_.pair().face_width * pair_.stiffness_per_width(s[i], true);
-  }
-  pair_curve_.emplace(std::move(s), std::move(k));
-  speed_ = pinion_speed * geometry_.radii(0).base;
-  period_ = geometry_.base_pitch_transverse() / speed_;
+  period_ = spur_.period();
   const double halves = geometry_.pair().herringbone ? 2.0 : 1.0;
   nominal_force_ = operating.pinion_torque / halves / (geometry_.radii(0).base * std::cos(geometry_.base_helix_angle()));
   if (load_dependent_friction() && !(nominal_force_ > 0.0))
@@ -120,19 +84,10 @@ HalfMesh::HalfMesh(const geometry::GearPairGeometry& geometry, const std::array<
   if (geometry_.base_helix_angle() > 0.0) {
     build_tables(materials);
   } else {
-    // As the 6-DOF model: k̄ over the positions A + i·p_bt/N, the arms over the midpoints.
-    constexpr int samples = 720;
-    const double pb = geometry_.base_pitch_transverse();
-    for (int i = 0; i < samples; ++i) {
-      for (const double s0 : geometry_.positions_in_contact(path.A + pb * i / samples))
-        mean_.stiffness += (*pair_curve_)(s0) / samples;
-      std::vector<Contact> contacts;
-      for (const double s0 : geometry_.positions_in_contact(path.A + pb * (i + 0.5) / samples))
-        contacts.push_back({s0, (*pair_curve_)(s0), sliding_sign(s0, path)});
-      const Sums sums = loaded_sums(contacts, nominal_force_, geometry_.pair().face_width);
-      mean_.chi_pinion += friction_.scale() * sums.k_rho1 / sums.k / samples;
-      mean_.chi_wheel += friction_.scale() * sums.k_rho2 / sums.k / samples;
-    }
+    mean_.stiffness = spur_.mean_stiffness();
+    const auto arms = spur_.mean_arms(friction_, nominal_force_);
+    mean_.chi_pinion = arms[0];
+    mean_.chi_wheel = arms[1];
   }
 }
 
@@ -152,11 +107,14 @@ void HalfMesh::build_tables(const std::array<model::Material, 2>& materials) {
   std::vector<double> k(static_cast<std::size_t>(options_.positions)), chi_p(k.size()), chi_g(k.size());
   for (std::size_t i = 0; i < k.size(); ++i) {
     const double s0 = path.A + pb * static_cast<double>(i) / static_cast<double>(k.size());
-    const Sums sums = loaded_sums(helical_contacts(s0), nominal_force_, line);
+    const auto contacts = helical_contacts(s0);
+    const auto arms = friction_arms(contacts, friction_, path.T2, nominal_force_, line);
+    double k_sum = 0.0;
+    for (const MeshContact& c : contacts) k_sum += c.k;
     k[i] = sliced.mesh_stiffness[i] / halves;
-    chi_p[i] = friction_.scale() * sums.k_rho1 / sums.k;
-    chi_g[i] = friction_.scale() * sums.k_rho2 / sums.k;
-    consistency_ = std::max(consistency_, std::abs(sums.k / k[i] - 1.0));
+    chi_p[i] = arms[0];
+    chi_g[i] = arms[1];
+    consistency_ = std::max(consistency_, std::abs(k_sum / k[i] - 1.0));
     mean_.stiffness += k[i] / static_cast<double>(k.size());
     mean_.chi_pinion += chi_p[i] / static_cast<double>(k.size());
     mean_.chi_wheel += chi_g[i] / static_cast<double>(k.size());
@@ -170,14 +128,14 @@ void HalfMesh::build_tables(const std::array<model::Material, 2>& materials) {
 
 // Slice j of width w at y_j = (j + ½)w meets the contact that is at s0 on the front face at
 // s0 − y_j·tan β_b; each of its pairs has the stiffness w/b·k_pair(s).
-std::vector<HalfMesh::Contact> HalfMesh::helical_contacts(double s0) const {
+std::vector<MeshContact> HalfMesh::helical_contacts(double s0) const {
   const auto& path = geometry_.path();
   const double b = geometry_.pair().face_width, w = b / options_.slices;
   const double tan_bb = std::tan(geometry_.base_helix_angle());
-  std::vector<Contact> contacts;
+  std::vector<MeshContact> contacts;
   for (int j = 0; j < options_.slices; ++j)
     for (const double s : geometry_.positions_in_contact(s0 - (j + 0.5) * w * tan_bb))
-      contacts.push_back({s, w / b * (*pair_curve_)(s), sliding_sign(s, path)});
+      contacts.push_back({s, w / b * spur_.pair_stiffness(s), sliding_sign(s, path.C)});
   return contacts;
 }
 
@@ -187,15 +145,15 @@ void HalfMesh::build_load_levels() {
   const double pb = geometry_.base_pitch_transverse();
   const double line = geometry_.pair().face_width / options_.slices / std::cos(geometry_.base_helix_angle());
   const auto n = static_cast<std::size_t>(options_.positions);
-  std::vector<std::vector<Contact>> contacts;
+  std::vector<std::vector<MeshContact>> contacts;
   for (std::size_t i = 0; i < n; ++i)
     contacts.push_back(helical_contacts(path.A + pb * static_cast<double>(i) / static_cast<double>(n)));
   for (int l = 0; l <= load_levels; ++l) {
     std::vector<double> chi_p(n), chi_g(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const Sums sums = loaded_sums(contacts[i], nominal_force_ * l / 4.0, line);
-      chi_p[i] = sums.k_rho1 / sums.k;
-      chi_g[i] = sums.k_rho2 / sums.k;
+      const auto arms = friction_arms(contacts[i], friction_, path.T2, nominal_force_ * l / 4.0, line);
+      chi_p[i] = arms[0];
+      chi_g[i] = arms[1];
     }
     chi_p_levels_.emplace_back(period_, chi_p, options_.harmonics);
     chi_g_levels_.emplace_back(period_, chi_g, options_.harmonics);
@@ -217,30 +175,22 @@ std::array<double, 2> HalfMesh::arms(double t, double t_mid, double force) const
   return {blend(chi_p_levels_), blend(chi_g_levels_)};
 }
 
-// Spur half: the pairs of the interval holding t_mid, as in the 6-DOF model (pair j, j base
-// pitches ahead of the newest, at s_j = A + u·t − n·p_bt + j·p_bt).
+// Spur half: the pairs of the interval holding t_mid, those of the 6-DOF model (SpurMesh),
+// the arms at their shares of `force`.
 MeshPoint HalfMesh::spur_point(double t, double t_mid, double force) const {
-  const auto& path = geometry_.path();
-  const double pb = geometry_.base_pitch_transverse();
-  const double n = std::floor(speed_ * t_mid / pb);
-  auto k_at = [&](double s) { return (*pair_curve_)(std::clamp(s, path.A, path.E)); };
-  std::array<Contact, 3> contacts{};
+  std::array<MeshContact, 3> contacts{};
   std::size_t count = 0;
-  double rate = 0.0;
-  for (int j = 0; j < 3; ++j) {
-    const double s_mid = path.A + speed_ * t_mid - n * pb + j * pb;
-    if (s_mid < path.A || s_mid > path.E) continue;
-    const double s = std::clamp(path.A + speed_ * t - n * pb + j * pb, path.A, path.E);
-    // λ of the whole interval: intervals end where a pair passes C.
-    contacts[count++] = {s, k_at(s), sliding_sign(s_mid, path)};
-    // dk/dt = u·dk/ds by a central difference on the spline, one-sided at the path's ends.
-    const double h = 1e-6 * (path.E - path.A);
-    const double lo = std::max(path.A, s - h), hi = std::min(path.E, s + h);
-    rate += speed_ * (k_at(hi) - k_at(lo)) / (hi - lo);
+  MeshPoint m;
+  for (const SpurPair& p : spur_.pairs(t, t_mid)) {
+    contacts[count++] = {p.s, p.stiffness, p.lambda};
+    m.stiffness += p.stiffness;
+    m.rate += p.rate;
   }
-  const Sums sums = loaded_sums(std::span(contacts.data(), count), force, geometry_.pair().face_width);
-  const double mu = friction_.scale();
-  return {sums.k, rate, sums.k > 0.0 ? mu * sums.k_rho1 / sums.k : 0.0, sums.k > 0.0 ? mu * sums.k_rho2 / sums.k : 0.0};
+  const auto arms =
+      friction_arms(std::span(contacts.data(), count), friction_, geometry_.path().T2, force, geometry_.pair().face_width);
+  m.chi_pinion = arms[0];
+  m.chi_wheel = arms[1];
+  return m;
 }
 
 MeshPoint HalfMesh::at(double t, double t_mid) const {
@@ -248,20 +198,9 @@ MeshPoint HalfMesh::at(double t, double t_mid) const {
   return {k_->value(t), k_->derivative(t), chi_p_->value(t), chi_g_->value(t)};
 }
 
-// Spur: once per mesh period each, a pair enters (u·t ≡ 0), the leading pair leaves
-// (u·t ≡ E − A − p_bt) and a pair passes the pitch point (u·t ≡ C − A mod p_bt).
 std::vector<double> HalfMesh::switch_times(double t0, double t1) const {
-  std::vector<double> times;
-  if (k_) return times;
-  const auto& path = geometry_.path();
-  const double pb = geometry_.base_pitch_transverse();
-  const double exit_offset = std::fmod(path.E - path.A, pb) / speed_;
-  const double pitch_offset = std::fmod(path.C - path.A, pb) / speed_;
-  for (double base = std::floor(t0 / period_) * period_; base < t1 + period_; base += period_)
-    for (const double t : {base, base + exit_offset, base + pitch_offset})
-      if (t > t0 && t < t1) times.push_back(t);
-  std::sort(times.begin(), times.end());
-  return times;
+  if (k_) return {};
+  return spur_.break_times(t0, t1);
 }
 
 }  // namespace gearbench::dynamics

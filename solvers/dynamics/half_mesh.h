@@ -8,8 +8,9 @@
 // from the same slices, tabulated over one mesh cycle and represented by their leading mesh
 // harmonics (FFTW): the right-hand side is smooth and needs no restarts, and the steps of
 // the finite slices (near slices × the mesh frequency) are filtered out.
-// Spur (β_b = 0): the transverse pair sum of the 6-DOF model, evaluated directly, with its
-// switch times (a pair enters, leaves, passes the pitch point).
+// Spur (β_b = 0): the transverse pair sum of the 6-DOF model (SpurMesh, the same object the
+// 6-DOF model uses), evaluated directly, with its switch times (a pair enters, leaves,
+// passes the pitch point).
 //
 // With a friction law (docs/dynamics-model.md, "Friction laws") the arms depend on the
 // half's instantaneous normal force F: spur, per pair from its share F·k_j/Σk; helical,
@@ -24,8 +25,7 @@
 #include "geometry/gear_pair_geometry.h"
 #include "model/materials.h"
 #include "pair_friction.h"
-#include "stiffness/cubic_spline.h"
-#include "stiffness/pair_stiffness.h"
+#include "spur_mesh.h"
 
 namespace gearbench::dynamics {
 
@@ -56,7 +56,7 @@ class FourierSeries {
 
 struct HalfMeshOptions {
   int slices = 100;     ///< face-width slices of a helical half
-  int positions = 720;  ///< table points over one mesh cycle (helical)
+  int positions = SpurMesh::mean_positions;  ///< table points over one mesh cycle (helical)
   int harmonics = 24;   ///< mesh harmonics kept of the tables (helical); the slicing's steps lie far above
   double friction_coefficient = 0.0;  ///< μ of the constant law
   FrictionLawOptions friction_law;    ///< a law of solvers/lubricant instead
@@ -92,26 +92,15 @@ class HalfMesh {
   [[nodiscard]] double truncation() const { return truncation_; }
 
  private:
-  struct Sums {
-    double k = 0.0, k_rho1 = 0.0, k_rho2 = 0.0;  ///< Σk, Σk·λ·ρ1·f, Σk·λ·ρ2·f (f = μ_c/scale)
-    void add(double k_pair, double s, double lambda, const geometry::PathOfContact& path, double factor);
-  };
-  /// One contact: position s, stiffness k (helical: slice width w/b times k_pair), sliding sign λ.
-  struct Contact {
-    double s, k, lambda;
-  };
-  [[nodiscard]] std::vector<Contact> helical_contacts(double s0) const;
-  /// Σ over the contacts with μ_c of the law at the share F·k_c/Σk of `force` over `length` each.
-  [[nodiscard]] Sums loaded_sums(std::span<const Contact> contacts, double force, double length) const;
+  /// Every contact of every slice with the front face's reference pair at s0 (helical).
+  [[nodiscard]] std::vector<MeshContact> helical_contacts(double s0) const;
   [[nodiscard]] MeshPoint spur_point(double t, double t_mid, double force) const;
   void build_tables(const std::array<model::Material, 2>& materials);
   void build_load_levels();
 
   const geometry::GearPairGeometry& geometry_;
   HalfMeshOptions options_;
-  stiffness::PairStiffness pair_;
-  std::optional<stiffness::CubicSpline> pair_curve_;  ///< healthy pair stiffness over A..E, whole face width
-  double speed_ = 0.0;   ///< u = ω1·r_b1 [m/s]
+  SpurMesh spur_;  ///< the transverse pairs: the spur half itself, a helical half's single-pair curve
   double period_ = 0.0;  ///< T_mesh = p_bt/u [s]
   std::optional<FourierSeries> k_, chi_p_, chi_g_;
   PairFriction friction_;

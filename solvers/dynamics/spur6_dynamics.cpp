@@ -16,7 +16,6 @@ namespace gearbench::dynamics {
 
 namespace {
 constexpr double pi = std::numbers::pi;
-constexpr int spline_nodes = 1025;
 // The state: q = [x1, y1, θ1, x2, y2, θ2] (docs/dynamics-model.md), their rates at rate + i,
 // then the work accumulators of the energy balance.
 enum Coordinate : int { X1 = 0, Y1 = 1, TH1 = 2, X2 = 3, Y2 = 4, TH2 = 5 };
@@ -59,8 +58,7 @@ Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
     : geometry_(geometry),
       options_((options.validate(), std::move(options))),
       friction_(geometry, materials, operating, options_.friction_coefficient, options_.friction_law),
-      pair_(geometry, materials, stiffness::ToothModel{stiffness::BeamStart::improved, options_.fillet},
-            {0.5 * geometry.radii(0).root, 0.5 * geometry.radii(1).root}, options_.crack, true) {
+      mesh_(geometry, materials, operating.pinion_speed, options_.fillet, options_.crack) {
   if (geometry_.base_helix_angle() > 0.0)
     throw InputError(fmt::format("gear_pair.helix_angle_deg = {:.6g}: model \"spur6\" needs 0 (a spur pair)",
                                  geometry_.pair().helix_angle * 180.0 / pi));
@@ -86,65 +84,27 @@ Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
   p_.E = path.E;
   p_.T1T2 = path.T2;
   p_.pbt = geometry_.base_pitch_transverse();
-  p_.contact_speed = operating.pinion_speed * p_.rb1;
+  p_.contact_speed = mesh_.contact_speed();
   p_.z1 = pair.teeth[0];
   p_.face_width = pair.face_width;
   p_.backlash = options_.backlash.value_or(0.0);
-  p_.crack_mouth = p_.rb1 * std::tan(geometry_.transverse_pressure_angle());
+  p_.crack_mouth = mesh_.crack_mouth();
   if (geometry_.contact_ratio_transverse() >= 2.0)
     throw InputError(fmt::format("gear_pair: transverse contact ratio {:.4f}; model \"spur6\" allows [1, 2) "
                                  "(one or two pairs in contact)", geometry_.contact_ratio_transverse()));
-
-  std::vector<double> s(spline_nodes), k(spline_nodes);
-  for (int i = 0; i < spline_nodes; ++i) {
-    s[static_cast<std::size_t>(i)] = p_.A + (p_.E - p_.A) * i / (spline_nodes - 1);
-    k[static_cast<std::size_t>(i)] = pair.face_width * pair_.stiffness_per_width(s[static_cast<std::size_t>(i)], true);
-  }
-  healthy_.emplace(std::move(s), std::move(k));
-  double sum = 0.0;
-  constexpr int samples = 720;
-  for (int i = 0; i < samples; ++i) {
-    const double s0 = p_.A + p_.pbt * i / samples;
-    for (const double t : geometry_.positions_in_contact(s0)) sum += pair_stiffness(t);
-  }
-  p_.mean_mesh_stiffness = sum / samples;
-  // Quasi-static torque balance under the mean friction arms (docs/dynamics-model.md,
-  // "Loads"): ā_i = mean over u·t = (i + ½)·p_bt/N of Σμ_j·λ_j·k_j·ρ_ij / Σk_j, μ_j of a law
-  // at the pair's share (T1/R_b1)·k_j/Σk_j of the nominal force.
-  double arm1 = 0.0, arm2 = 0.0;
-  for (int i = 0; i < samples; ++i) {
-    const auto positions = geometry_.positions_in_contact(p_.A + p_.pbt * (i + 0.5) / samples);
-    double k_sum = 0.0, k1 = 0.0, k2 = 0.0;
-    for (const double t : positions) k_sum += pair_stiffness(t);
-    for (const double t : positions) {
-      const double kj = pair_stiffness(t), lambda = t > p_.C ? 1.0 : (t < p_.C ? -1.0 : 0.0);
-      const double mu_factor = friction_.factor(t, p_.T1 / p_.rb1 * kj / k_sum / p_.face_width);
-      k1 += kj * lambda * t * mu_factor;
-      k2 += kj * lambda * (p_.T1T2 - t) * mu_factor;
-    }
-    arm1 += friction_.scale() * k1 / k_sum / samples;
-    arm2 += friction_.scale() * k2 / k_sum / samples;
-  }
-  p_.static_force = p_.T1 / (p_.rb1 + arm1);
-  p_.T2 = p_.static_force * (p_.rb2 + arm2);
+  p_.mean_mesh_stiffness = mesh_.mean_stiffness();
+  // Quasi-static torque balance under the mean friction arms ā_i (docs/dynamics-model.md,
+  // "Loads"), μ_j of a law at the pair's share of the nominal force T1/R_b1.
+  const auto arms = mesh_.mean_arms(friction_, p_.T1 / p_.rb1);
+  p_.static_force = p_.T1 / (p_.rb1 + arms[0]);
+  p_.T2 = p_.static_force * (p_.rb2 + arms[1]);
   const double me = p_.I1 * p_.I2 / (p_.I1 * p_.rb2 * p_.rb2 + p_.I2 * p_.rb1 * p_.rb1);
   p_.mesh_damping = 2.0 * p_.zeta_mesh * std::sqrt(p_.mean_mesh_stiffness * me);
 }
 
-double Spur6Dynamics::pair_stiffness(double s, bool cracked_tooth, bool crack_acting) const {
-  using Mode = stiffness::ToothCompliance::CrackMode;
-  // A pair's interval starts or ends at A or E: its position there is A or E up to rounding.
-  const double on_path = std::clamp(s, p_.A, p_.E);
-  if (cracked_tooth)
-    return geometry_.pair().face_width * pair_.stiffness_per_width(on_path, crack_acting ? Mode::active : Mode::inactive);
-  return (*healthy_)(on_path);
-}
-
-// Pairs of the interval holding t_mid (docs/dynamics-model.md, "Mesh"): n whole base pitches
-// have passed; pair j, j base pitches ahead of the newest, carries pinion tooth (n − j) mod z1.
+// The pairs of the interval holding t_mid (docs/dynamics-model.md, "Mesh", SpurMesh), each
+// carrying F_j = k_j·δ + c_j·δ̇ (c_j = c_m·k_j/k̄) and its friction.
 Spur6Dynamics::MeshState Spur6Dynamics::mesh(double t, double t_mid, const double* y) const {
-  const double u = p_.contact_speed;
-  const double n = std::floor(u * t_mid / p_.pbt);
   const double delta = line_of_action(p_, y, 0);
   const double delta_rate = line_of_action(p_, y, rate);
   MeshState m;
@@ -158,35 +118,23 @@ Spur6Dynamics::MeshState Spur6Dynamics::mesh(double t, double t_mid, const doubl
     m.back = delta < -p_.backlash;
     m.penetration = delta > 0.0 ? delta : (m.back ? delta + p_.backlash : 0.0);
   }
-  for (int j = 0; j < 3; ++j) {
-    const double s_mid = p_.A + u * t_mid - n * p_.pbt + j * p_.pbt;
-    if (s_mid < p_.A || s_mid > p_.E) continue;
-    const double s = p_.A + u * t - n * p_.pbt + j * p_.pbt;
-    const long tooth = static_cast<long>(n) - j;
-    const bool cracked = options_.crack && options_.crack->crack.length > 0.0 && ((tooth % p_.z1) + p_.z1) % p_.z1 == 0;
-    // A pitch crack acts once the contact is above its mouth; a root crack always.
-    const bool acting = cracked && (options_.crack->crack.type == stiffness::Crack::Type::root || s_mid > p_.crack_mouth);
-    const double k = pair_stiffness(s, cracked, acting);
+  for (const SpurPair& pair : mesh_.pairs(t, t_mid)) {
+    const double k = pair.stiffness;
     const double c = p_.mesh_damping * k / p_.mean_mesh_stiffness;
     double force = k * delta + c * delta_rate;
     if (loss) {
       const double pushed = k * m.penetration + c * delta_rate;
       force = delta > 0.0 ? std::max(0.0, pushed) : (m.back ? std::min(0.0, pushed) : 0.0);
     }
-    // dk/dt = u·dk/ds by a central difference, one-sided at the path's ends.
-    const double h = 1e-6 * (p_.E - p_.A);
-    const double lo = std::max(p_.A, s - h), hi = std::min(p_.E, s + h);
     m.stiffness += k;
     m.damping += c;
-    m.stiffness_rate += u * (pair_stiffness(hi, cracked, acting) - pair_stiffness(lo, cracked, acting)) / (hi - lo);
-    // The sliding direction of the whole interval (intervals end where a pair passes C).
-    const double lambda = s_mid > p_.C ? 1.0 : (s_mid < p_.C ? -1.0 : 0.0);
+    m.stiffness_rate += pair.rate;
     // μ of the law at the pair's own load; the constant μ bit for bit.
-    const double mu = friction_.coefficient(s, std::abs(force) / p_.face_width);
+    const double mu = friction_.coefficient(pair.s, std::abs(force) / p_.face_width);
     m.force += force;
-    m.friction += mu * lambda * force;
-    m.moment1 += mu * lambda * force * s;
-    m.moment2 += mu * lambda * force * (p_.T1T2 - s);
+    m.friction += mu * pair.lambda * force;
+    m.moment1 += mu * pair.lambda * force * pair.s;
+    m.moment2 += mu * pair.lambda * force * (p_.T1T2 - pair.s);
   }
   // (F_m − Σk_j·p)·δ̇: Σc_j·δ̇² while the flanks push, −Σk_j·p·δ̇ ≥ 0 while they separate faster
   // than the damper allows (F_m = 0 at p ≠ 0), 0 in the backlash.
@@ -245,26 +193,7 @@ std::vector<double> Spur6Dynamics::static_state() const {
   return y;
 }
 
-// Where the right-hand side jumps, once per mesh period each: a pair enters (u·t ≡ 0), the
-// leading pair leaves (u·t ≡ E − A − p_bt), a pair passes the pitch point, reversing its
-// friction (u·t ≡ C − A, mod p_bt), and, with a pitch crack, passes the crack's mouth.
-std::vector<double> Spur6Dynamics::break_times(double t0, double t1) const {
-  const double period = p_.pbt / p_.contact_speed;
-  const double exit_offset = (p_.E - p_.A - p_.pbt) / p_.contact_speed;
-  const double pitch_offset = std::fmod(p_.C - p_.A, p_.pbt) / p_.contact_speed;
-  const double mouth_offset = std::fmod(p_.crack_mouth - p_.A, p_.pbt) / p_.contact_speed;
-  const bool mouth = options_.crack && options_.crack->crack.type == stiffness::Crack::Type::pitch;
-  std::vector<double> times;
-  for (double base = std::floor(t0 / period) * period; base < t1 + period; base += period)
-    for (const double t : {base, base + exit_offset, base + pitch_offset, base + (mouth ? mouth_offset : 0.0)})
-      if (t > t0 && t < t1) times.push_back(t);
-  std::sort(times.begin(), times.end());
-  // Coinciding events (the mouth is the pitch point of an unshifted pinion) give one restart.
-  times.erase(std::unique(times.begin(), times.end(),
-                          [period](double a, double b) { return std::abs(a - b) < 1e-12 * period; }),
-              times.end());
-  return times;
-}
+std::vector<double> Spur6Dynamics::break_times(double t0, double t1) const { return mesh_.break_times(t0, t1); }
 
 std::vector<double> Spur6Dynamics::natural_frequencies() const {
   Eigen::Matrix<double, 6, 6> M = Eigen::Matrix<double, 6, 6>::Zero(), K = M;

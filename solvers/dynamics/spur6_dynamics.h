@@ -16,10 +16,9 @@
 #include "march.h"
 #include "pair_friction.h"
 #include "response_analysis.h"
+#include "spur_mesh.h"
 #include "geometry/gear_pair_geometry.h"
 #include "model/materials.h"
-#include "stiffness/cubic_spline.h"
-#include "stiffness/pair_stiffness.h"
 
 namespace gearbench::dynamics {
 
@@ -85,9 +84,8 @@ class Spur6Dynamics final : public DynamicsModel {
 
   [[nodiscard]] Spur6Result solve() const;
   [[nodiscard]] const Spur6Parameters& parameters() const { return p_; }
-  /// Single-pair stiffness k_pair(s) [N/m] of a healthy pair, or of the cracked tooth's
-  /// pair with its crack acting or not (decided for a whole interval by its midpoint).
-  [[nodiscard]] double pair_stiffness(double s, bool cracked_tooth = false, bool crack_acting = false) const;
+  /// The mesh excitation: pairs in contact, their stiffness, the break times.
+  [[nodiscard]] const SpurMesh& mesh_excitation() const { return mesh_; }
   /// Size of the state: 6 coordinates, 6 rates, 3 work accumulators (damping, friction, stiffness).
   [[nodiscard]] std::size_t state_size() const override { return 15; }
   /// The contact functions of docs/dynamics-model.md, "Contact loss": δ, δ + b, δ + τδ̇,
@@ -119,8 +117,7 @@ class Spur6Dynamics final : public DynamicsModel {
   Spur6Options options_;
   Spur6Parameters p_;
   PairFriction friction_;
-  stiffness::PairStiffness pair_;
-  std::optional<stiffness::CubicSpline> healthy_;  ///< healthy pair; a cracked pair is integrated directly
+  SpurMesh mesh_;
 };
 
 }  // namespace gearbench::dynamics

@@ -31,7 +31,7 @@ inline reference::Spur6Parameters spur6_reference(const dynamics::Spur6Dynamics&
   r.T1T2 = p.T1T2;
   r.pbt = p.pbt;
   r.contact_speed = p.contact_speed;
-  r.pair_stiffness = [&d](double s) { return d.pair_stiffness(s); };
+  r.pair_stiffness = [&d](double s) { return d.mesh_excitation().pair_stiffness(s); };
   r.backlash = p.backlash;
   return r;
 }
