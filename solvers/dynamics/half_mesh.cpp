@@ -97,6 +97,7 @@ void HalfMesh::build_tables(const std::array<model::Material, 2>& materials) {
   stiffness::MeshStiffnessOptions mo;
   mo.positions = options_.positions;
   mo.slices = options_.slices;
+  mo.fillet = options_.fillet;
   const auto sliced = stiffness::MeshStiffness(geometry_, materials, mo).solve();
   const double halves = geometry_.pair().herringbone ? 2.0 : 1.0;
   const auto& path = geometry_.path();
