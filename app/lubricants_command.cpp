@@ -17,7 +17,8 @@ using nlohmann::json;
 void print_catalogue(const lubricant::Catalogue& c) {
   std::cout << "gearbench lubricant catalogue (data/lubricants.json); `gearbench lubricants NAME --temperature-C T`\n"
                "resolves one. ISO VG grades (ISO 3448 midpoint nu40) of every base: mineral, PAO, ester, PAG;\n"
-               "a grade without a sourced nu100 needs {\"grade\", \"base\", \"nu100_mm2_s\"} in a case.\n\n";
+               "a grade without a sourced nu100 needs {\"grade\", \"base\", \"nu100_mm2_s\"} or {\"grade\", \"base\",\n"
+               "\"viscosity_index\"} (nu100 by ASTM D2270 / ISO 2909) in a case.\n\n";
   for (const auto& name : c.names()) std::cout << "  " << name << "\n";
   std::cout << "\nsources:\n";
   for (const auto& [key, text] : c.sources().items()) std::cout << "  " << key << ": " << text.get<std::string>() << "\n";

@@ -8,6 +8,7 @@
 #include "lubricant/catalogue.h"
 #include "lubricant/lubricant_section.h"
 #include "lubricant/rheology.h"
+#include "lubricant/viscosity_index.h"
 #include "lubricant/viscosity_temperature.h"
 #include "model/errors.h"
 #include "model/json_reader.h"
@@ -93,6 +94,51 @@ TEST(Lubricant, OutOfRangeIsAnErrorAndExtrapolationAWarning) {
                 .find("lubricant.grade = 330: not an ISO 3448 grade"), std::string::npos);
 }
 
+// Table 1's last row (70 mm²/s) against D2270's formulas for L and H above it (5.1.2), which
+// continue the table: 4903.87 vs 4905 and 1557.66 vs 1558 (0.023 %, 0.022 %): within 0.03 %.
+TEST(Lubricant, ViscosityIndexTableMeetsItsFormulasAt70) {
+  const auto& vi = cat().viscosity_index();
+  const auto [L70, H70] = vi.reference_viscosities(70.0);
+  const auto [L, H] = vi.reference_viscosities(70.0 + 1e-9);
+  EXPECT_NEAR(L / L70, 1.0, 3e-4);
+  EXPECT_NEAR(H / H70, 1.0, 3e-4);
+}
+
+// The inverse: ν100 from ν40 and VI returns the ν100 the VI came from (to the bisection's
+// 1e-12), for every grade 7 ... 1500 over its allowed VIs; index() rises with ν100 at fixed
+// ν40 on a 0.01 mm²/s grid (one ν100 per VI) but for the seam at 70 mm²/s, where the formulas
+// of 5.1.2 start 0.02 % below the table's last row: VI drops there by less than 0.05 (at most
+// 0.03, grade 100), a band in which two ν100 within 0.1 mm²/s of 70 share a VI; the printed examples invert to their ν100 within
+// what their 2-decimal VIs allow (±0.005 VI: ±2e-6 relative for A; B from 156.37, 0.05 below
+// its unrounded VI: −0.012 %).
+TEST(Lubricant, ViscosityIndexInverse) {
+  const auto& vi = cat().viscosity_index();
+  for (const int g : cat().grades()) {
+    const auto range = vi.index_range(g);
+    if (g == 2) {
+      EXPECT_FALSE(range);  // ν100 ≥ 2 mm²/s and ν100 < ν40 = 2: none
+      continue;
+    }
+    ASSERT_TRUE(range) << g;
+    double previous = -1e300;
+    for (int i = 0; 2.0 + 0.01 * i < g; ++i) {
+      const double y = 2.0 + 0.01 * i, v = vi.index(g, y);
+      if (i == 6801) {  // the first point past 70 mm²/s
+        EXPECT_GT(v, previous - 0.05) << "grade " << g;
+        EXPECT_GT(vi.index(g, 70.1), previous) << "grade " << g;
+      } else {
+        EXPECT_GT(v, previous) << "grade " << g << " nu100 " << y;
+      }
+      previous = v;
+    }
+    for (const double y : {2.5, 0.2 * g, 0.5 * g})
+      if (y > 2.0 && y < g) EXPECT_NEAR(*vi.nu100(g, vi.index(g, y)) / y, 1.0, 1e-11) << g << " " << y;
+    EXPECT_FALSE(vi.nu100(g, range->first - 1.0));
+  }
+  EXPECT_NEAR(*vi.nu100(73.30, 92.43) / 8.86, 1.0, 1e-5);
+  EXPECT_NEAR(*vi.nu100(22.83, 156.37) / 5.05, 1.0, 2e-4);
+}
+
 ResolvedSection resolve(const json& section, SectionForm form = SectionForm::gear, double celsius = 80.0) {
   return resolve_section(section, "lubricant", form, CaseTemperature{"operating.oil_temperature_C", kelvin(celsius)});
 }
@@ -100,14 +146,35 @@ ResolvedSection resolve(const json& section, SectionForm form = SectionForm::gea
 TEST(Lubricant, SectionErrorsNameTheKey) {
   EXPECT_NE(error_of([] { (void)resolve({{"name", "ISO VG 1000 mineral"}}); })
                 .find("lubricant.name = \"ISO VG 1000 mineral\": the catalogue has no sourced nu100"), std::string::npos);
-  EXPECT_NE(error_of([] { (void)resolve({{"grade", 320}, {"base", "mineral"}, {"viscosity_index", 95}}); })
-                .find("lubricant.viscosity_index = 95: not supported"), std::string::npos);
   EXPECT_NE(error_of([] { (void)resolve({{"name", "ISO VG 320 ester"}}); })
                 .find("lubricant.pressure_viscosity_1_per_GPa: missing"), std::string::npos);
   EXPECT_NE(error_of([] { (void)resolve({{"name", "FVA 3"}, {"temperature_C", 50}}); }).find("give it once"),
             std::string::npos);
   EXPECT_NE(error_of([] { (void)resolve({{"grade", 320}, {"base", "olive"}}); })
                 .find("lubricant.base = \"olive\": allowed values are mineral, pao, ester, pag"), std::string::npos);
+}
+
+// A grade with a stated viscosity index: ν100 by ASTM D2270 / ISO 2909, which the echo names;
+// errors name the key and the VIs the grade allows.
+TEST(Lubricant, GradeWithViscosityIndex) {
+  const auto r = resolve({{"grade", 10}, {"base", "mineral"}, {"viscosity_index", 95}});
+  const double nu100 = r.section.at("nu100_mm2_s").get<double>();
+  EXPECT_NEAR(cat().viscosity_index().index(10.0, nu100), 95.0, 1e-9);
+  EXPECT_EQ(r.echo.at("sources").at("nu100_mm2_s"), "astm_d2270(case)");
+  EXPECT_EQ(r.echo.at("viscosity_index"), 95);
+  EXPECT_TRUE(r.echo.at("source_texts").contains("astm_d2270"));
+  // a stated VI overrides the catalogue's ν100 of a grade that has one
+  EXPECT_NE(resolve({{"grade", 320}, {"base", "mineral"}, {"viscosity_index", 95}}).section.at("nu100_mm2_s"),
+            resolve({{"name", "ISO VG 320 mineral"}}).section.at("nu100_mm2_s"));
+  EXPECT_NE(error_of([] { (void)resolve({{"grade", 5}, {"base", "mineral"}, {"viscosity_index", 95}}); })
+                .find("lubricant.viscosity_index = 95: allowed range for nu40 = 5 mm2/s is [276.7, 1646.3]"), std::string::npos);
+  EXPECT_NE(error_of([] { (void)resolve({{"grade", 2}, {"base", "pao"}, {"viscosity_index", 120}}); })
+                .find("lubricant.viscosity_index = 120: ASTM D2270 / ISO 2909 define no viscosity index below"),
+            std::string::npos);
+  EXPECT_NE(error_of([] { (void)resolve({{"grade", 10}, {"base", "pao"}, {"viscosity_index", 120}, {"nu100_mm2_s", 3}}); })
+                .find("lubricant.viscosity_index: give nu100_mm2_s or viscosity_index, not both"), std::string::npos);
+  EXPECT_NE(error_of([] { (void)resolve({{"name", "FVA 3"}, {"viscosity_index", 95}}); }).find("lubricant.name: give either"),
+            std::string::npos);
 }
 
 // Explicit keys win; z then follows the explicit η.

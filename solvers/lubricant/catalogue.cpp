@@ -67,6 +67,14 @@ OilData read_oil(const json& e) {
   return o;
 }
 
+/// ASTM D2270 Table 1 from the catalogue's "viscosity_index_table_1" (rows ν100, L, H).
+ViscosityIndex read_table_1(const json& data) {
+  std::vector<ViscosityIndex::Row> rows;
+  for (const auto& r : data.at("viscosity_index_table_1").at("rows"))
+    rows.push_back({r.at(0).get<double>(), r.at(1).get<double>(), r.at(2).get<double>()});
+  return ViscosityIndex(std::move(rows));
+}
+
 /// T [K] in degC as a message shows it (10 significant digits: no 39.85000000000002).
 std::string celsius(double T) { return fmt::format("{:.10g}", T - celsius_zero); }
 
@@ -98,7 +106,7 @@ const Catalogue& Catalogue::builtin() {
   return catalogue;
 }
 
-Catalogue::Catalogue(const json& data) : sources_(data.at("sources")) {
+Catalogue::Catalogue(const json& data) : sources_(data.at("sources")), viscosity_index_(read_table_1(data)) {
   const auto& limits = data.at("limits");
   const auto range = limits.at("temperature_C"), interval = limits.at("data_interval_C");
   temperature_range_ = {range[0].get<double>() + celsius_zero, range[1].get<double>() + celsius_zero};
@@ -155,7 +163,22 @@ OilData Catalogue::find(const std::string& name, const std::string& key) const {
 void Catalogue::require_data(const OilData& oil, const std::string& key) {
   if (!oil.at_temperature && (!oil.nu40 || !oil.nu100))
     throw InputError(fmt::format("{} = {}: the catalogue has no sourced nu100 for this oil; give it as {{\"grade\", "
-                                 "\"base\", \"nu100_mm2_s\"}}", key, model::shown_value(oil.name)));
+                                 "\"base\", \"nu100_mm2_s\"}} or {{\"grade\", \"base\", \"viscosity_index\"}}", key,
+                                 model::shown_value(oil.name)));
+}
+
+double Catalogue::nu100_from_viscosity_index(double nu40, double vi, const std::string& key) const {
+  if (const auto nu100 = viscosity_index_.nu100(nu40, vi)) return *nu100;
+  const auto range = viscosity_index_.index_range(nu40);
+  if (!range)
+    throw InputError(fmt::format("{} = {}: ASTM D2270 / ISO 2909 define no viscosity index below nu100 = {} mm2/s, "
+                                 "which an oil of nu40 = {} mm2/s cannot reach; give nu100_mm2_s", key,
+                                 model::format_value(vi), model::format_value(viscosity_index_.min_nu100()),
+                                 model::format_value(nu40)));
+  throw InputError(fmt::format("{} = {}: allowed range for nu40 = {} mm2/s is [{:.1f}, {:.1f}] (nu100 from {} mm2/s, "
+                               "where ASTM D2270 / ISO 2909 begin, up to nu40)", key, model::format_value(vi),
+                               model::format_value(nu40), range->first, range->second,
+                               model::format_value(viscosity_index_.min_nu100())));
 }
 
 OilData Catalogue::grade(int grade, BaseOil base, std::optional<double> nu100, const std::string& key) const {

@@ -2,7 +2,8 @@
 // The lubricant catalogue (data/lubricants.json, compiled in): ISO VG grades by base oil,
 // reference oils of the seeds and of FEUP/FVA, and the base-oil data, every figure with its
 // source; and the properties of an oil at a temperature:
-//  - kinematic viscosity by ASTM D341 through ν40 and ν100 (WaltherLine),
+//  - kinematic viscosity by ASTM D341 through ν40 and ν100 (WaltherLine); a grade's ν100 may
+//    come from a stated viscosity index (ASTM D2270 / ISO 2909, viscosity_index.h),
 //  - density by ISO/TR 15144-1 (20) from ρ15, dynamic viscosity η = ρ·ν,
 //  - pressure–viscosity α by ISO/TR 15144-1 (8)–(11) per base oil (none for esters),
 //  - Roelands z from α and η (rheology.h),
@@ -14,6 +15,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "viscosity_index.h"
 
 namespace gearbench::lubricant {
 
@@ -69,6 +72,9 @@ class Catalogue {
   [[nodiscard]] OilData find(const std::string& name, const std::string& key) const;
   /// An ISO VG grade of a base oil; ν100 from the catalogue unless given [mm²/s].
   [[nodiscard]] OilData grade(int grade, BaseOil base, std::optional<double> nu100, const std::string& key) const;
+  /// ν100 [mm²/s] of an oil of ν40 with viscosity index `vi` (ASTM D2270 / ISO 2909);
+  /// InputError at `key` (where VI came from) naming the VIs that ν40 allows.
+  [[nodiscard]] double nu100_from_viscosity_index(double nu40, double vi, const std::string& key) const;
   /// InputError at `key` (the oil's name) when a two-point oil lacks ν100 (grades without a
   /// sourced one).
   static void require_data(const OilData& oil, const std::string& key);
@@ -81,6 +87,8 @@ class Catalogue {
   [[nodiscard]] std::vector<std::string> names() const;
   [[nodiscard]] const std::vector<int>& grades() const { return grades_; }
   [[nodiscard]] const nlohmann::json& sources() const { return sources_; }
+  /// ASTM D2270 / ISO 2909 with the catalogue's Table 1.
+  [[nodiscard]] const ViscosityIndex& viscosity_index() const { return viscosity_index_; }
 
  private:
   struct BaseData {
@@ -95,6 +103,7 @@ class Catalogue {
   std::vector<int> grades_;
   std::map<BaseOil, std::map<int, Sourced>> grade_nu100_;
   std::vector<OilData> oils_;
+  ViscosityIndex viscosity_index_;
   std::pair<double, double> temperature_range_, data_interval_;  ///< [K]: resolvable, and the data points
   double min_viscosity_ = 2.0, single_point_tolerance_ = 0.01;
 };

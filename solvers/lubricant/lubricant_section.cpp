@@ -57,13 +57,10 @@ constexpr const char* library_keys[] = {"name", "grade", "base", "viscosity_inde
 /// The oil the section names: by "name", or by "grade" + "base" (+ "nu100_mm2_s").
 OilData named_oil(const json& section, const std::string& path, const Catalogue& catalogue) {
   model::ObjectReader r(section, path);
-  if (r.has("viscosity_index"))
-    throw InputError(fmt::format("{}.viscosity_index = {}: not supported: the catalogue has no ISO 2909 viscosity-index "
-                                 "tables to find nu100 from; give nu100_mm2_s", path,
-                                 model::shown_value(section.at("viscosity_index"))));
   if (r.has("name")) {
-    if (r.has("grade") || r.has("base"))
-      throw InputError(fmt::format("{}.name: give either \"name\" or \"grade\" with \"base\", not both", path));
+    if (r.has("grade") || r.has("base") || r.has("viscosity_index"))
+      throw InputError(fmt::format("{}.name: give either \"name\" or \"grade\" with \"base\" (and \"viscosity_index\"), "
+                                   "not both", path));
     auto oil = catalogue.find(r.string("name"), r.key_path("name"));
     Catalogue::require_data(oil, r.key_path("name"));
     return oil;
@@ -72,6 +69,15 @@ OilData named_oil(const json& section, const std::string& path, const Catalogue&
   const auto base = parse_base_oil(r.string("base"), r.key_path("base"));
   const auto nu100 = r.optional_number("nu100_mm2_s", model::Range::positive(1e6), "mm2/s");
   auto oil = catalogue.grade(grade, base, nu100, r.key_path("grade"));
+  // A stated viscosity index (ASTM D2270 / ISO 2909) gives ν100 from the grade's ν40.
+  if (r.has("viscosity_index")) {
+    if (nu100)
+      throw InputError(fmt::format("{}.viscosity_index: give nu100_mm2_s or viscosity_index, not both", path));
+    // Any number here: the VIs allowed depend on ν40 (Catalogue::nu100_from_viscosity_index says which).
+    const double vi = r.number("viscosity_index", model::Range::closed(-1e300, 1e300));
+    oil.nu100 = Sourced{catalogue.nu100_from_viscosity_index(oil.nu40->value, vi, r.key_path("viscosity_index")),
+                        "astm_d2270(case)"};
+  }
   Catalogue::require_data(oil, r.key_path("grade"));
   return oil;
 }
@@ -176,6 +182,7 @@ ResolvedSection resolve_section(const json& section, const std::string& path, Se
   const OilData oil = named_oil(section, path, catalogue);
   OilState state;
   json echo = {{"name", oil.name}};
+  if (section.contains("viscosity_index")) echo["viscosity_index"] = section.at("viscosity_index");
   if (form == SectionForm::micropitting_oil) {
     state = temperature_free_state(oil, path);
   } else {

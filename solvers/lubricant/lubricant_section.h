@@ -1,6 +1,7 @@
 #pragma once
 // A case's lubricant section that names an oil — {"name": "ISO VG 320 mineral"} or {"grade":
-// 320, "base": "mineral", "nu100_mm2_s": 23} — turned into the explicit keys the kind's reader
+// 320, "base": "mineral", "nu100_mm2_s": 23} or {"grade": 10, "base": "mineral",
+// "viscosity_index": 95} (ν100 by ASTM D2270 / ISO 2909) — turned into the explicit keys the kind's reader
 // takes, from the catalogue at the case's temperature (issue 24). Keys the section gives
 // explicitly override the catalogue's; the echo says what was resolved and from where.
 #include <nlohmann/json.hpp>

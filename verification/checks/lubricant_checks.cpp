@@ -1,13 +1,16 @@
 // The lubricant catalogue (solvers/lubricant/catalogue.h) against published data and the
 // independent ISO/TR 15144-1 reference: ASTM D341 through two temperatures of real oils
 // against their third, and the pressure–viscosity coefficient against the seed 001 value and
-// reference/closed_form/iso15144_micropitting (a separate implementation of the TR).
+// reference/closed_form/iso15144_micropitting (a separate implementation of the TR); the
+// viscosity index (ASTM D2270 / ISO 2909) and its inverse against the standard's worked examples.
 #include <cmath>
+#include <functional>
 #include <fmt/format.h>
 
 #include "check_registry.h"
 #include "closed_form/iso15144_micropitting.h"
 #include "lubricant/catalogue.h"
+#include "lubricant/viscosity_index.h"
 #include "lubricant/viscosity_temperature.h"
 
 namespace gearbench::verification {
@@ -107,6 +110,62 @@ const bool alpha_registered = [] {
   register_alpha_reference("lubricant.alpha.iso15144_mineral", "ISO VG 220 mineral", iso::OilBase::mineral);
   register_alpha_reference("lubricant.alpha.iso15144_pao", "FEUP PAOR", iso::OilBase::polyalphaolefin);
   register_alpha_reference("lubricant.alpha.iso15144_pag", "FEUP PAGD", iso::OilBase::polyglycol);
+  return true;
+}();
+
+// ASTM D2270's worked examples (5.1.4 procedure A, 6.1.4 (1) procedure B; the standard was
+// not at hand: as quoted at dgaequipment.com): L and H interpolated in Table 1, the VI, and
+// the ν100 the VI route (a grade "with a stated viscosity index") finds from ν40 and that VI.
+struct D2270Example {
+  const char* id;
+  const char* quantity;
+  const char* unit;
+  const char* printed;
+  double value;
+  reports::Tolerance tolerance;
+  const char* justification;
+  std::function<double(const lubricant::ViscosityIndex&)> computed;
+};
+
+const char* two_decimals = "the example prints 2 decimals (±0.005)";
+
+const bool d2270_registered = [] {
+  const D2270Example examples[] = {
+      {"lubricant.viscosity_index.d2270_a_L", "L of Table 1 at nu100 = 8.86 mm²/s", "mm²/s", "L = 119.94", 119.94,
+       {0.005, 0.0}, two_decimals,
+       [](const lubricant::ViscosityIndex& v) { return v.reference_viscosities(8.86).first; }},
+      {"lubricant.viscosity_index.d2270_a_H", "H of Table 1 at nu100 = 8.86 mm²/s", "mm²/s", "H = 69.48", 69.48,
+       {0.005, 0.0}, two_decimals,
+       [](const lubricant::ViscosityIndex& v) { return v.reference_viscosities(8.86).second; }},
+      {"lubricant.viscosity_index.d2270_a_vi", "VI of nu40 = 73.30, nu100 = 8.86 mm²/s (procedure A)", "-",
+       "VI = 92.43 (reported 92)", 92.43, {0.005, 0.0}, two_decimals,
+       [](const lubricant::ViscosityIndex& v) { return v.index(73.30, 8.86); }},
+      {"lubricant.viscosity_index.d2270_a_inverse", "nu100 from nu40 = 73.30 mm²/s and VI = 92.43", "mm²/s",
+       "nu100 = 8.86 mm²/s", 8.86, {0.0, 1e-5},
+       "VI printed to ±0.005, which moves nu100 by ±2e-6 relative here (dVI/dnu100 ≈ 290 per mm²/s)",
+       [](const lubricant::ViscosityIndex& v) { return *v.nu100(73.30, 92.43); }},
+      {"lubricant.viscosity_index.d2270_b_H", "H of Table 1 at nu100 = 5.05 mm²/s", "mm²/s", "H = 28.97", 28.97,
+       {0.0051, 0.0}, "the interpolation gives 28.975, printed 28.97 (2 decimals, ±0.005)",
+       [](const lubricant::ViscosityIndex& v) { return v.reference_viscosities(5.05).second; }},
+      {"lubricant.viscosity_index.d2270_b_vi", "VI of nu40 = 22.83, nu100 = 5.05 mm²/s (procedure B)", "-",
+       "VI = 156.37 (reported 156)", 156.37, {0.06, 0.0},
+       "the example computes with H rounded to 28.97; with the interpolated 28.975 the VI is 156.42 (dVI/dH ≈ 9.6 "
+       "per mm²/s here)",
+       [](const lubricant::ViscosityIndex& v) { return v.index(22.83, 5.05); }},
+      {"lubricant.viscosity_index.d2270_b_inverse", "nu100 from nu40 = 22.83 mm²/s and VI = 156.37", "mm²/s",
+       "nu100 = 5.05 mm²/s", 5.05, {0.0, 2e-4},
+       "the printed VI is 0.05 below the one of the unrounded H (above): −1.3e-4 relative in nu100",
+       [](const lubricant::ViscosityIndex& v) { return *v.nu100(22.83, 156.37); }},
+  };
+  for (const auto& e : examples)
+    Registry::instance().add(CheckSpec{
+        .id = e.id, .section = section, .solver = solver,
+        .reference = fmt::format("ASTM D2270 worked example: {}", e.printed), .quantity = e.quantity,
+        .unit = e.unit,
+        .tolerance = e.tolerance, .justification = e.justification, .tier = Tier::fast,
+        .run = [e](const CheckContext&) {
+          return CheckValue{e.computed(Catalogue::builtin().viscosity_index()), e.value};
+        }});
   return true;
 }();
 
