@@ -54,7 +54,7 @@ std::vector<FormKey> form_keys(SectionForm form) {
 /// The keys of the library in a section (removed before the kind's reader sees it).
 constexpr const char* library_keys[] = {"name", "grade", "base", "viscosity_index", "temperature_C"};
 
-/// The oil the section names: by "name", or by "grade" + "base" (+ "nu100_mm2_s").
+/// The oil the section names: by "name", or by "grade" + "base" (+ "nu100_mm2_s" or "viscosity_index").
 OilData named_oil(const json& section, const std::string& path, const Catalogue& catalogue) {
   model::ObjectReader r(section, path);
   if (r.has("name")) {
