@@ -158,6 +158,12 @@ Herringbone12Dynamics::Herringbone12Dynamics(const geometry::GearPairGeometry& g
         throw InputError(fmt::format("mesh_in_impact: at {:.6g} rpm the mean impact pulse ({:.4g} N) would carry the "
                                      "whole load; set it false", operating.pinion_speed * 30.0 / pi, mean_impact));
     }
+    // What feeds the pulse (docs, "Mesh-in impact"): the corner closes the gap δ̄ in Δt = 2δ̄/v_s,
+    // its closing speed falling linearly from v_s to 0 at A. Eq. 6 takes v_s as held while the
+    // pulse compresses the mesh by F_s·q_s: r = F_s·q_s/δ̄ > 1 asks for more than the approach gives.
+    const double delta_static = p_.static_force / p_.mean_mesh_stiffness;
+    p_.impact_approach_time = 2.0 * delta_static / p_.impact_velocity;
+    p_.impact_compression_ratio = p_.impact_force / k_in / delta_static;
   }
   p_.mean_impact_force = mean_impact;
   p_.T_g = p_.static_force * (p_.R_g * cb + mesh_.mean().chi_wheel) + p_.R_g * mean_impact;

@@ -57,6 +57,8 @@ struct Herringbone12Parameters {
   double mesh_damping = 0;                   ///< c_m at k̄ [N·s/m]
   double static_force = 0;                   ///< F̄_n per half [N]
   double impact_velocity = 0, impact_force = 0, impact_duration = 0;  ///< eq. 6 pulse
+  double impact_approach_time = 0;      ///< Δt = 2δ̄/v_s: the corner's approach from first contact to A [s]
+  double impact_compression_ratio = 0;  ///< r = F_s·q_s/δ̄: the pulse's compression over the approach's
   double mean_impact_force = 0;              ///< F̄_s = (2/π)·F_s·τ/T [N]
   double period = 0;                         ///< T_mesh [s]
   std::array<double, 2> clock_offset{};      ///< half h's mesh clock is t + clock_offset[h]
