@@ -162,6 +162,11 @@ TEST(Lubricant, GradeWithViscosityIndex) {
   EXPECT_NEAR(cat().viscosity_index().index(10.0, nu100), 95.0, 1e-9);
   EXPECT_EQ(r.echo.at("sources").at("nu100_mm2_s"), "astm_d2270(case)");
   EXPECT_EQ(r.echo.at("viscosity_index"), 95);
+  EXPECT_EQ(r.echo.at("sources").at("viscosity_index"), "case");
+  // a two-point oil named without a VI echoes D2270's from its ν40 and ν100
+  const auto fva3a = resolve({{"name", "FVA 3A"}});
+  EXPECT_DOUBLE_EQ(fva3a.echo.at("viscosity_index").get<double>(), cat().viscosity_index().index(90.02, 10.41));
+  EXPECT_EQ(fva3a.echo.at("sources").at("viscosity_index"), "astm_d2270(manjunath2023, manjunath2023)");
   EXPECT_TRUE(r.echo.at("source_texts").contains("astm_d2270"));
   // a stated VI overrides the catalogue's ν100 of a grade that has one
   EXPECT_NE(resolve({{"grade", 320}, {"base", "mineral"}, {"viscosity_index", 95}}).section.at("nu100_mm2_s"),

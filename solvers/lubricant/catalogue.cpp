@@ -257,6 +257,9 @@ void Catalogue::add_two_point_state(const OilData& oil, double T, const std::str
   const std::string line_source = fmt::format("astm_d341({}, {})", oil.nu40->source, oil.nu100->source);
   s.nu40 = oil.nu40;
   s.nu100 = oil.nu100;
+  if (oil.nu100->value >= viscosity_index_.min_nu100())
+    s.viscosity_index = Sourced{viscosity_index_.index(oil.nu40->value, oil.nu100->value),
+                                fmt::format("astm_d2270({}, {})", oil.nu40->source, oil.nu100->source)};
   s.density_15C = oil.density_15C;
   s.kinematic_viscosity = Sourced{nu, line_source};
   if (!oil.density_15C) return;

@@ -57,6 +57,7 @@ struct OilState {
   std::optional<Sourced> pressure_viscosity;     ///< α(T) [1/GPa]
   std::optional<Sourced> roelands_z;
   std::optional<Sourced> thermal_conductivity, specific_heat;
+  std::optional<Sourced> viscosity_index;        ///< by ASTM D2270 from ν40, ν100 (none below 2 mm²/s at 100 °C)
   std::optional<BaseOil> base;
   std::vector<std::string> warnings;             ///< e.g. extrapolated beyond the data points
 };

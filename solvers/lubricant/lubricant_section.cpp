@@ -182,7 +182,6 @@ ResolvedSection resolve_section(const json& section, const std::string& path, Se
   const OilData oil = named_oil(section, path, catalogue);
   OilState state;
   json echo = {{"name", oil.name}};
-  if (section.contains("viscosity_index")) echo["viscosity_index"] = section.at("viscosity_index");
   if (form == SectionForm::micropitting_oil) {
     state = temperature_free_state(oil, path);
   } else {
@@ -196,6 +195,14 @@ ResolvedSection resolve_section(const json& section, const std::string& path, Se
   }
   if (state.base) echo["base"] = base_oil_name(*state.base);
   json out = fill_form_keys(section, path, form, state, echo);
+  // The VI the oil has (not a key any kind reads): the case's own, else D2270's from ν40 and ν100.
+  if (section.contains("viscosity_index")) {
+    echo["viscosity_index"] = section.at("viscosity_index");
+    echo["sources"]["viscosity_index"] = "case";
+  } else if (state.viscosity_index) {
+    echo["viscosity_index"] = state.viscosity_index->value;
+    echo["sources"]["viscosity_index"] = state.viscosity_index->source;
+  }
   if (form == SectionForm::gear || form == SectionForm::ehl_line) follow_roelands_z(section, out, echo);
   if (form == SectionForm::micropitting_oil) {
     out["base"] = iso15144_base(*state.base);
