@@ -277,6 +277,7 @@ struct Spur6Model {
   using Solver = dynamics::Spur6Dynamics;
   static constexpr auto read = read_spur6_options;
   static constexpr auto result = spur6_result;
+  static json notes(const Solver&) { return json::array(); }
   static std::vector<std::vector<double>> forces(const dynamics::Spur6Result& r) { return {r.mesh_force}; }
   static double te_rms(const dynamics::Spur6Result& r) { return r.te.rms; }
   static const dynamics::FrictionLawOptions& law(const dynamics::Spur6Options& o) { return o.friction_law; }
@@ -286,6 +287,16 @@ struct Herringbone12Model {
   using Solver = dynamics::Herringbone12Dynamics;
   static constexpr auto read = read_herringbone_options;
   static constexpr auto result = herringbone12_result;
+  /// The mesh-in pulse outside the premise of seed eq. 6 (docs/dynamics-model.md, "Mesh-in impact").
+  static json notes(const Solver& solver) {
+    const auto& p = solver.parameters();
+    if (!(p.impact_compression_ratio > 1.0)) return json::array();
+    return json::array({fmt::format(
+        "mesh_in_impact: the eq. 6 pulse compresses the mesh by {:.3g} times the loaded deflection that the entering "
+        "tooth's approach supplies (parameters.impact.compression_ratio; eq. 6 holds where it is <= 1, here below about "
+        "{:.0f} rpm at this torque), so it overstates the dynamic factor; it is off by default",
+        p.impact_compression_ratio, p.omega_p * 30.0 / M_PI / p.impact_compression_ratio)});
+  }
   static std::vector<std::vector<double>> forces(const dynamics::Herringbone12Result& r) {
     return {r.mesh_force[0], r.mesh_force[1]};
   }
@@ -319,6 +330,7 @@ json run_model(model::ObjectReader& root, const json& case_json, const model::Ge
   const auto r = solver.solve();
   json result = Model::result(solver, r);
   result["notes"] = periodicity_notes(r.periodicity);
+  for (const auto& note : Model::notes(solver)) result["notes"].push_back(note);
   result["friction_model"] = lubricant::friction_model_name(Model::law(options).model);
   result["contact_loss"] = contact_json(options.backlash, r);
   if (efficiency_spec)

@@ -146,8 +146,9 @@ Herringbone12Dynamics::Herringbone12Dynamics(const geometry::GearPairGeometry& g
     const double k_in = mesh_.at(0.0, 1e-9 * p_.period).stiffness;
     p_.impact_duration = pi * std::sqrt(me / k_in);
     if (p_.impact_duration >= p_.period)
-      throw InputError(fmt::format("mesh_in_impact: the pulse lasts {:.4g} s, longer than a mesh cycle ({:.4g} s); "
-                                   "set it false at this speed", p_.impact_duration, p_.period));
+      throw InputError(fmt::format("mesh_in_impact = true: at operating.pinion_speed_rpm = {:.6g} the pulse lasts {:.4g} s, "
+                                   "longer than a mesh cycle ({:.4g} s); set mesh_in_impact false",
+                                   operating.pinion_speed * 30.0 / pi, p_.impact_duration, p_.period));
     for (int iteration = 0; iteration < 50; ++iteration) {
       const double delta_static = p_.static_force / p_.mean_mesh_stiffness;
       p_.impact_velocity = p_.omega_g * std::sqrt(2.0 * delta_static * path.T2 * (path.T2 - path.A) / path.A);
@@ -155,8 +156,10 @@ Herringbone12Dynamics::Herringbone12Dynamics(const geometry::GearPairGeometry& g
       mean_impact = 2.0 / pi * p_.impact_force * p_.impact_duration / p_.period;
       p_.static_force = (p_.T_p - p_.R_p * mean_impact) / (p_.R_p * cb + mesh_.mean().chi_pinion);
       if (!(p_.static_force > 0.0))
-        throw InputError(fmt::format("mesh_in_impact: at {:.6g} rpm the mean impact pulse ({:.4g} N) would carry the "
-                                     "whole load; set it false", operating.pinion_speed * 30.0 / pi, mean_impact));
+        throw InputError(fmt::format("mesh_in_impact = true: at operating.pinion_speed_rpm = {:.6g} and "
+                                     "operating.pinion_torque_Nm = {:.6g} the mean impact pulse ({:.4g} N) would carry "
+                                     "the whole load; set mesh_in_impact false",
+                                     operating.pinion_speed * 30.0 / pi, operating.pinion_torque, mean_impact));
     }
     // What feeds the pulse (docs, "Mesh-in impact"): the corner closes the gap δ̄ in Δt = 2δ̄/v_s,
     // its closing speed falling linearly from v_s to 0 at A. Eq. 6 takes v_s as held while the

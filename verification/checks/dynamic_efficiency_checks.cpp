@@ -15,7 +15,7 @@ namespace {
 const std::string section = "Seed 000: dynamic efficiency";
 
 /// The seed case as cases/seed000_herringbone_dynamics.json runs it: the dynamics defaults
-/// with μ = 0.05 (and the mesh-in impact), the loss with its "dynamic_efficiency" section.
+/// with μ = 0.05 (no mesh-in impact), the loss with its "dynamic_efficiency" section.
 efficiency::DynamicEfficiencyResult seed000_dynamic_efficiency(const CheckContext& ctx) {
   static std::map<std::string, efficiency::DynamicEfficiencyResult> cache;
   if (auto it = cache.find(ctx.cases_dir); it != cache.end()) return it->second;
@@ -46,19 +46,22 @@ const RegisterCheck dynamic_mean(CheckSpec{
       const auto& e = seed000_dynamic_efficiency(ctx);
       return CheckValue{100.0 * e.mean, 98.8, {{"static_mean_percent", 100.0 * e.static_mean}}};
     },
-    .recorded = 99.1472, .recorded_tolerance = 0.0005});
+    .recorded = 99.1220, .recorded_tolerance = 0.0005});
 
 void add_note(const CheckContext& ctx, reports::Report& report) {
   const auto& e = seed000_dynamic_efficiency(ctx);
   report.notes.push_back({section, fmt::format(
-      "The 12-DOF mesh forces of the seed case (20 recorded mesh cycles, mesh-in impact on, dynamic factor "
-      "≈ 2.9) give a dynamic mean efficiency of {:.3f} % against the static {:.3f} % on the same phase grid; "
-      "the paper has 98.8 % below 99.1 %. Here the dynamic mean is not below the static one: with the mixed "
-      "law the loss grows almost in proportion to the load, so load fluctuations about the mean barely "
-      "change the mean loss, and the instants where the impact drives the mesh force below zero dissipate "
-      "nothing. Without the impact the two means agree to 0.01 points. The paper's drop needs a loss that "
-      "grows faster than the load, or larger dynamic loads than this model's; its friction inputs "
-      "(roughness, pressure-viscosity coefficient) are not printed.",
+      "The 12-DOF mesh forces of the seed case (20 recorded mesh cycles, dynamic factor 1.01; the mesh-in "
+      "impact is off, its eq. 6 pulse being outside its premise at 2000 rpm: section \"Gear dynamics (12-DOF "
+      "herringbone)\") give a dynamic mean efficiency of {:.3f} % against the static {:.3f} % on the same "
+      "phase grid, both from loss-versus-load curves at 5 load levels interpolated at the instant's force; "
+      "the paper has 98.8 % below 99.1 %. Here the two agree to 0.01 points: the helical overlap keeps the "
+      "mesh force within about 1 % of its mean, and with the mixed law the loss grows almost in proportion to "
+      "the load, so such fluctuations barely change the mean loss. With the pulse on (dynamic factor 2.9) the "
+      "dynamic mean was 99.147 %, still not below the static one: the instants where the pulse drives the mesh "
+      "force below zero dissipate nothing. The paper's drop needs a loss that grows faster than the load, or "
+      "larger dynamic loads than this model's; its friction inputs (roughness, pressure-viscosity coefficient) "
+      "are not printed.",
       100.0 * e.mean, 100.0 * e.static_mean)});
   report.figures.push_back({"seed000_dynamic_efficiency", section, "Dynamic efficiency over the recorded window",
                             "time [ms]", "efficiency [%]",

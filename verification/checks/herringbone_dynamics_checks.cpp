@@ -80,8 +80,9 @@ const RegisterCheck herringbone_reduces_to_spur(CheckSpec{
                         {{"halves_difference", halves / s.te.peak_to_peak}, {"samples", s.time.size()}}};
     }});
 
-// Seed 000 pair with friction, mesh-in impacts and the right half a quarter cycle behind:
-// 10 mesh cycles from the static state, CVODE (Adams, rtol 1e-8) against RK4 at 2048 steps a cycle.
+// Seed 000 pair with friction, mesh-in impacts (on here as a hard excitation of the numerics:
+// at 2000 rpm the pulse is outside eq. 6's premise, docs "Mesh-in impact") and the right half a
+// quarter cycle behind: 10 mesh cycles from the static state against RK4 at 2048 steps a cycle.
 /// max over halves |δ − δ_RK4| / p2p(δ) over 10 mesh cycles from the static state (seed 000,
 /// halves a quarter cycle apart) with `integrator`, RK4 at 2048 steps a cycle (ω_max·h ≈ 0.1,
 /// ~1e-8 of the peak-to-peak: docs/dynamics-model.md, "Integrators: work–precision").
@@ -89,6 +90,7 @@ CheckValue herringbone_rk4_agreement(const CheckContext& ctx, const dynamics::In
   const auto c = seed000(ctx);
   const geometry::GearPairGeometry g(c.pair);
   auto o = seed000_options();
+  o.mesh_in_impact = true;
   o.half_offset = 0.25;
   o.runup_cycles = 0;
   o.record_cycles = 10;
@@ -123,7 +125,7 @@ const bool herringbone_rk4_per_method = register_rk4_per_method(
 
 // Over 4 mesh cycles after a 40-cycle run-up: ΔE = W_in − W_out − D_damping − D_friction +
 // W_parametric + W_impact (docs/dynamics-model.md, "Energy balance"), the works integrated by
-// CVODE with the motion.
+// CVODE with the motion; the impact on, for its work W_s.
 const RegisterCheck herringbone_energy(CheckSpec{
     .id = "herringbone12.energy_balance", .section = herringbone_section, .solver = solver,
     .reference = "energy balance of the equations of motion",
@@ -135,6 +137,7 @@ const RegisterCheck herringbone_energy(CheckSpec{
       const auto c = seed000(ctx);
       const geometry::GearPairGeometry g(c.pair);
       auto o = seed000_options();
+      o.mesh_in_impact = true;
       o.runup_cycles = 40;
       o.record_cycles = 4;
       const auto r = dynamics::Herringbone12Dynamics(g, c.materials, c.operating, o).solve();
@@ -157,7 +160,9 @@ const RegisterCheck herringbone_impact_velocity(CheckSpec{
     .tier = Tier::fast, .run = [](const CheckContext& ctx) {
       const auto c = seed000(ctx);
       const geometry::GearPairGeometry g(c.pair);
-      const auto p = dynamics::Herringbone12Dynamics(g, c.materials, c.operating, seed000_options()).parameters();
+      auto o = seed000_options();
+      o.mesh_in_impact = true;
+      const auto p = dynamics::Herringbone12Dynamics(g, c.materials, c.operating, o).parameters();
       const auto exact = reference::corner_contact(c.pair, c.operating.pinion_speed, p.static_force / p.mean_mesh_stiffness);
       return CheckValue{p.impact_velocity / exact.approach_velocity - 1.0, 0.0,
                         {{"velocity_m_per_s", p.impact_velocity}, {"exact_velocity_m_per_s", exact.approach_velocity},
@@ -279,11 +284,18 @@ const RegisterSection herringbone_section_figures(SectionSpec{
       const geometry::GearPairGeometry g(c.pair);
       const dynamics::Herringbone12Dynamics d(g, c.materials, c.operating, seed000_options());
       const auto r = d.solve();
+      auto impulsive_options = seed000_options();
+      impulsive_options.mesh_in_impact = true;
+      const dynamics::Herringbone12Dynamics impulsive(g, c.materials, c.operating, impulsive_options);
+      const auto ri = impulsive.solve();
+      const auto cycles = [](const std::vector<double>& v, double scale) {
+        return scaled(std::vector<double>(v.begin(), v.begin() + 4 * 64 + 1), scale);
+      };
       report.figures.push_back({"dynamics_seed000_herringbone_force", herringbone_section,
                                 "Seed 000 pair at 2000 rpm: mesh force of the left half over 4 mesh cycles",
                                 "time [s]", "F_n [kN]",
-                                {{"left half", std::vector<double>(r.time.begin(), r.time.begin() + 4 * 64 + 1),
-                                  scaled(std::vector<double>(r.mesh_force[0].begin(), r.mesh_force[0].begin() + 4 * 64 + 1), 1e-3)}}});
+                                {{"the case (no mesh-in impact)", cycles(r.time, 1.0), cycles(r.mesh_force[0], 1e-3)},
+                                 {"with the eq. 6 pulse", cycles(ri.time, 1.0), cycles(ri.mesh_force[0], 1e-3)}}});
       const auto with = herringbone_sweep(ctx, true, 12), without = herringbone_sweep(ctx, false, 22);
       report.figures.push_back({"dynamics_seed000_frequency_response", herringbone_section,
                                 "Seed 000 pair: dynamic factor (max F_n / F̄_n of a half) against pinion speed",
@@ -291,40 +303,38 @@ const RegisterSection herringbone_section_figures(SectionSpec{
                                 {{"with mesh-in impact", with.rpm, with.factor},
                                  {"without mesh-in impact", without.rpm, without.factor},
                                  {"r = F_s·q_s/δ̄ of the pulse (eq. 6 needs ≤ 1)", with.rpm, with.compression_ratio}}});
-      const auto& p = d.parameters();
+      const auto& p = impulsive.parameters();
       const auto& e = r.energy;
       report.notes.push_back({herringbone_section, fmt::format(
           "Seed 000 pair (cases/seed000_herringbone_dynamics.json), 12-DOF model of docs/dynamics-model.md. "
           "Bearings, groove coupling, damping and μ = 0.05 are gearbench's choices (the seed gives none). "
           "Mean mesh stiffness per half {:.4g} N/m; natural frequencies {:.0f} to {:.0f} Hz; mesh frequency "
-          "{:.1f} Hz. Mesh-in impact (seed eq. 6 with gearbench's corner-contact velocity v_s = {:.3f} m/s): "
-          "peak {:.0f} N over {:.3g} ms per half and cycle, against F̄_n = {:.0f} N; it dominates the "
-          "dynamic factor ({:.3f}); without it the helical overlap keeps the factor near 1 (see the "
-          "frequency response; with it, the model has no steady state from {} rpm on, where the mean pulse "
-          "would carry the whole load). Over {} recorded cycles: input {:.2f} J − output {:.2f} J against damping "
-          "{:.3f} J + friction {:.3f} J − impact work {:.3f} J − stiffness work {:.4f} J + energy change "
-          "{:.3f} J; residual {:.1e}.",
-          p.mean_mesh_stiffness, r.natural_frequencies.front(), r.natural_frequencies.back(), r.mesh_frequency,
-          p.impact_velocity, p.impact_force, 1e3 * p.impact_duration, p.static_force, r.dynamic_factor,
-          with.skipped.empty() ? 0.0 : with.skipped.front(), seed000_options().record_cycles, e.input, e.output, e.damping, e.friction, e.impact, e.parametric,
-          e.energy_change, e.residual)});
+          "{:.1f} Hz; dynamic factor {:.4f} (the helical overlap keeps it near 1 over the sweep). Over {} recorded "
+          "cycles: input {:.2f} J − output {:.2f} J against damping {:.3f} J + friction {:.3f} J − stiffness work "
+          "{:.4f} J + energy change {:.3f} J; residual {:.1e}.",
+          d.parameters().mean_mesh_stiffness, r.natural_frequencies.front(), r.natural_frequencies.back(),
+          r.mesh_frequency, r.dynamic_factor, seed000_options().record_cycles, e.input, e.output, e.damping, e.friction,
+          e.parametric, e.energy_change, e.residual)});
       const double deflection = p.static_force / p.mean_mesh_stiffness;
       report.notes.push_back({herringbone_section, fmt::format(
-          "Is the dynamic factor {:.2f} at 2000 rpm physical? No (docs/dynamics-model.md, \"Mesh-in impact\"). "
-          "Seed eq. 6, F_s = v_s·√(m_e/q_s), is the peak of the half-sine of a mass m_e meeting a spring 1/q_s "
-          "at a speed v_s that holds through the pulse (τ = π√(m_e·q_s) = {:.3g} ms, compression F_s·q_s). The "
+          "Mesh-in impact, and is the dynamic factor {:.2f} it gives at 2000 rpm physical? No (docs/dynamics-model.md, "
+          "\"Mesh-in impact\"), so the case leaves it off. Seed eq. 6, F_s = v_s·√(m_e/q_s), is the peak of the "
+          "half-sine of a mass m_e meeting a spring 1/q_s at a speed v_s that holds through the pulse "
+          "(here F_s = {:.0f} N against F̄_n = {:.0f} N, τ = π√(m_e·q_s) = {:.3g} ms, compression F_s·q_s). The "
           "corner of the entering tooth closes the loaded gap δ̄ = {:.3g} µm in Δt = 2δ̄/v_s = {:.3g} ms, its "
           "closing speed falling from v_s = {:.3f} m/s (the exact corner-contact construction gives {:.1f} % "
           "less) to zero at A: the approach supplies a compression of δ̄ at most, the pulse takes "
           "r = F_s·q_s/δ̄ = {:.2f} times that. r grows with speed and falls with load (r ∝ ω/√δ̄, figure): eq. 6 "
           "holds only where r ≤ 1, below about {:.0f} rpm at this torque (ω/r). Beyond it the entering pair takes "
-          "the loaded deflection within Δt ≪ τ, which the mesh stiffness k_m(t) already does at A; the pulse "
-          "counts it again, {:.1f}-fold here. Without the pulse the factor stays near 1 over the sweep.",
-          r.dynamic_factor, 1e3 * p.impact_duration, 1e6 * deflection, 1e3 * p.impact_approach_time, p.impact_velocity,
+          "the loaded deflection within Δt < τ, which the mesh stiffness k_m(t) already does at A; the pulse "
+          "counts it again, {:.1f}-fold here. A run with the pulse where r > 1 says so in its notes; from {} rpm "
+          "on the mean pulse would carry the whole load and the run is refused, naming speed and torque.",
+          ri.dynamic_factor, p.impact_force, p.static_force, 1e3 * p.impact_duration, 1e6 * deflection,
+          1e3 * p.impact_approach_time, p.impact_velocity,
           100.0 * (1.0 - reference::corner_contact(c.pair, c.operating.pinion_speed, deflection).approach_velocity /
                              p.impact_velocity),
           p.impact_compression_ratio, c.operating.pinion_speed * 30.0 / std::numbers::pi / p.impact_compression_ratio,
-          p.impact_compression_ratio)});
+          p.impact_compression_ratio, with.skipped.empty() ? 0.0 : with.skipped.front())});
     }});
 
 }  // namespace
