@@ -44,7 +44,7 @@ void expect_round_trip(const std::string& file) {
   const auto& echo = named_result.at("lubricant_resolved");
   for (const auto& [path, resolved] : echo.items()) {
     json& section = path == "lubricant" ? typed["lubricant"] : typed["micropitting"]["oil"];
-    for (const char* key : {"name", "grade", "base", "temperature_C"}) section.erase(key);
+    for (const char* key : {"name", "grade", "base", "viscosity_index", "temperature_C"}) section.erase(key);
     for (const auto& [key, value] : resolved.at("values").items()) section[key] = value;
   }
   const auto explicit_run = run_gearbench("run '" + write_case("round_trip", typed.dump()) + "'");
@@ -56,6 +56,7 @@ void expect_round_trip(const std::string& file) {
 
 TEST(LubricantCli, ByNameAndByResolvedNumbersGiveIdenticalResults) {
   expect_round_trip("efficiency_iso_vg220_mineral_70C.json");  // grade, by ASTM D341 at 70 °C
+  expect_round_trip("efficiency_iso_vg100_mineral_vi97_70C.json");  // grade and VI: ν100 by ASTM D2270
   expect_round_trip("seed004_pitch_point_ehl_named_oil.json");  // one-temperature seed oil, ehl_line
   expect_round_trip("tehl_point_fva3.json");                    // thermal form, an explicit conductivity
   expect_round_trip("seed001_micropitting_named_oil.json");     // the ISO/TR 15144-1 oil section
