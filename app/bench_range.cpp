@@ -3,8 +3,9 @@
 // git worktree under --workdir, by a build script (scripts/build-commit: Release, only the
 // benchmark target, ccache; `SCRIPT SHA WORKDIR` prints the executable, `SCRIPT --clean
 // WORKDIR` removes what the builds left); the chosen benchmarks run with their repetitions
-// interleaved across the commits, and each commit gets one record in reports/perf. A commit that does not build or whose benchmarks fail is
-// recorded so, and the range goes on.
+// interleaved across the commits, and each commit gets one record in reports/perf. A commit
+// that does not build or whose benchmarks fail is recorded so and the range goes on, but the
+// command then names each such commit with the end of its log and exits 1.
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
@@ -96,14 +97,17 @@ std::string build(const BenchRangeRequest& request, reports::CommitOutcome& outc
   const auto out = lines_of(r.out);
   if (r.exit_code == 0 && !out.empty() && fs::exists(out.back())) return out.back();
   outcome.status = "build_failed";
-  outcome.log_tail = tail(read_text(log), 20);
+  outcome.log_tail = tail(read_text(log), 20) +
+                     (r.exit_code != 0 ? fmt::format("{} exited with code {}\n", request.build_script, r.exit_code)
+                                       : fmt::format("{} printed no executable that exists (last line: \"{}\")\n",
+                                                     request.build_script, out.empty() ? "" : out.back()));
   std::cerr << fmt::format("  {} does not build; recorded as such\n", outcome.sha.substr(0, 10));
   return "";
 }
 
 /// One repetition of the chosen benchmarks of one commit, in its own process; the outcome
 /// is marked run_failed when the executable fails.
-void run_once(const BenchRangeRequest& request, const std::string& exe, const std::string& filter,
+void run_once(const BenchRangeRequest& request, const std::string& exe, const std::string& filter, int repetition,
               reports::CommitOutcome& outcome) {
   const auto out = fs::path(request.workdir) / (outcome.sha.substr(0, 12) + ".bench.json");
   const auto log = fs::path(request.workdir) / (outcome.sha.substr(0, 12) + ".bench.log");
@@ -115,12 +119,22 @@ void run_once(const BenchRangeRequest& request, const std::string& exe, const st
       filter.empty() ? "" : "--benchmark_filter=" + shell_quoted(filter), shell_quoted(log.string())));
   if (r.exit_code != 0) {
     outcome.status = "run_failed";
-    outcome.log_tail = tail(read_text(log), 20);
+    outcome.log_tail = tail(read_text(log), 20) +
+                       fmt::format("{} exited with code {} at repetition {}\n", exe, r.exit_code, repetition + 1);
     return;
   }
   // A commit none of whose benchmarks match writes no output: it ran nothing.
   outcome.outputs.push_back(fs::exists(out) ? model::read_json_file(out.string()) : json::object());
   fs::remove(out);
+}
+
+/// Which commit failed, how, where its record is, and the end of the log that says why.
+std::string failure_text(const reports::CommitOutcome& outcome, const fs::path& record) {
+  std::string text = fmt::format("  {} ({}) {}; record {}:\n", outcome.sha.substr(0, 10), outcome.commit_time_utc,
+                                 outcome.status == "build_failed" ? "does not build" : "its benchmarks failed",
+                                 record.string());
+  for (const auto& line : lines_of(outcome.log_tail)) text += "    | " + line + "\n";
+  return text;
 }
 
 }  // namespace
@@ -137,27 +151,35 @@ int bench_range_command(const BenchRangeRequest& request) {
   for (const auto& [r, k] : reports::interleaved_schedule(outcomes.size(), request.repetitions)) {
     if (outcomes[k].status != "ok") continue;
     std::cerr << fmt::format("repetition {}/{}: {}\n", r + 1, request.repetitions, outcomes[k].sha.substr(0, 10));
-    run_once(request, exes[k], filter, outcomes[k]);
+    run_once(request, exes[k], filter, r, outcomes[k]);
   }
   reports::RangeContext range{.set = request.filter.empty() ? request.set : "custom", .filter = filter,
                               .repetitions = request.repetitions};
   for (const auto& o : outcomes) range.commits.push_back(o.sha);
   const auto missing = reports::missing_benchmarks(outcomes);
   const auto provenance = reports::provenance();
+  std::string failures;
   int failed = 0;
   for (std::size_t k = 0; k < outcomes.size(); ++k) {
     // Named by commit date, so that the folder lists the history in commit order.
     const auto stem = outcomes[k].commit_time_utc.substr(0, 10) + "_" + outcomes[k].sha.substr(0, 10);
     const auto target = free_path(request.out_dir, stem);
     write_record(target, reports::range_record(outcomes[k], range, missing[k], provenance));
-    if (outcomes[k].status != "ok") ++failed;
+    if (outcomes[k].status != "ok") {
+      ++failed;
+      failures += failure_text(outcomes[k], target);
+    }
     std::cout << target.string() << "\n";
   }
   if (!request.keep_worktrees)
     capture(fmt::format("{} --clean {} >&2", shell_quoted(request.build_script), shell_quoted(request.workdir)));
   const double minutes = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 60.0;
   std::cerr << fmt::format("{} commits, {} not built or not run, {:.1f} min\n", outcomes.size(), failed, minutes);
-  return exit_ok;
+  if (failed == 0) return exit_ok;
+  // Like a sweep with a failed case: every record is written, but the range is not whole.
+  std::cerr << fmt::format("error: {} of {} commits failed (recorded so; the range went on):\n{}", failed,
+                           outcomes.size(), failures);
+  return exit_failed;
 }
 
 }  // namespace gearbench::app

@@ -184,9 +184,10 @@ TEST(PerformanceSection, ThisCommitAgainstThePreviousRecordOfThisMachine) {
 void shell(const std::string& command) { ASSERT_EQ(std::system(command.c_str()), 0) << command; }
 
 TEST(PerfRangeCli, TinyRangeWithAFakeBuildWritesJoinsAndFlags) {
-  // A git repository of four commits: a base, then a "benchmark" of 1 ms, 2 ms, and one that
-  // does not build. The fake build script "builds" a commit into an executable that writes
-  // Google Benchmark JSON with the commit's time; the runner sees only the script's contract.
+  // A git repository of five commits: a base, then a "benchmark" of 1 ms, 2 ms, one whose
+  // benchmarks crash and one that does not build. The fake build script "builds" a commit into
+  // an executable that writes Google Benchmark JSON with the commit's time; the runner sees
+  // only the script's contract.
   const auto dir = fs::temp_directory_path() / ("gb_perf_range_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir / "repo");
@@ -194,7 +195,7 @@ TEST(PerfRangeCli, TinyRangeWithAFakeBuildWritesJoinsAndFlags) {
   const std::string git = "git -C '" + repo + "' -c user.name=t -c user.email=t@t ";
   shell(git + "init -q");
   int day = 1;
-  for (const char* ms : {"base", "1.0", "2.0", "broken"}) {
+  for (const char* ms : {"base", "1.0", "2.0", "crash", "broken"}) {
     std::ofstream(dir / "repo" / "ms.txt") << ms << "\n";
     shell(git + "add ms.txt");
     shell("GIT_COMMITTER_DATE='2026-11-0" + std::to_string(day) + "T00:00:00Z' " + git + "commit -q -m " + ms);
@@ -209,6 +210,7 @@ mkdir -p "$2"
 exe="$2/bench-$1"
 cat > "$exe" <<EOS
 #!/bin/sh
+[ "$ms" != crash ] || { echo "BM_Fast: crashed" >&2; exit 3; }
 for a in "\$@"; do case "\$a" in --benchmark_out=*) out="\${a#--benchmark_out=}";; esac; done
 printf '{"context":{},"benchmarks":[{"name":"BM_Fast","run_name":"BM_Fast","run_type":"iteration","repetitions":1,"repetition_index":0,"iterations":1,"real_time":$ms,"cpu_time":$ms,"time_unit":"ms"}]}' > "\$out"
 EOS
@@ -216,19 +218,36 @@ chmod +x "$exe"
 echo "$exe"
 )";
   fs::permissions(dir / "build.sh", fs::perms::owner_all);
-  const std::string args = "bench --commits HEAD~3..HEAD --repetitions 4 --filter BM_Fast --repo '" + repo +
+  const std::string args = "bench --commits HEAD~4..HEAD --repetitions 4 --filter BM_Fast --repo '" + repo +
                            "' --workdir '" + (dir / "work").string() + "' --build-script '" +
                            (dir / "build.sh").string() + "' --out '" + (dir / "records").string() + "'";
-  ASSERT_EQ(run_gearbench(args, dir / "log"), 0) << slurp(dir / "log");
+  // Every record is written, but a range with a failed commit is not a success: exit 1, and
+  // stderr names exactly the failed commits, each with why.
+  ASSERT_EQ(run_gearbench(args, dir / "log"), 1) << slurp(dir / "log");
+  const auto log = slurp(dir / "log");
   const auto runs = load_perf_records((dir / "records").string());
-  ASSERT_EQ(runs.size(), 3u) << slurp(dir / "log");
+  ASSERT_EQ(runs.size(), 4u) << log;
   std::map<std::string, const PerfRun*> by_status;
   for (const auto& r : runs) by_status[r.status + (r.seconds.count("BM_Fast") ? "" : "-")] = &r;
-  ASSERT_TRUE(by_status.count("build_failed-")) << slurp(dir / "log");
+  ASSERT_TRUE(by_status.count("build_failed-")) << log;
+  ASSERT_TRUE(by_status.count("run_failed-")) << log;
+  const auto failures_at = log.find("error: 2 of 4 commits failed");
+  ASSERT_NE(failures_at, std::string::npos) << log;
+  const auto broken_at = log.find(by_status["build_failed-"]->sha + " (2026-11-05T00:00:00Z) does not build");
+  const auto crash_at = log.find(by_status["run_failed-"]->sha + " (2026-11-04T00:00:00Z) its benchmarks failed");
+  ASSERT_NE(broken_at, std::string::npos) << log;
+  ASSERT_NE(crash_at, std::string::npos) << log;
+  EXPECT_GT(std::min(broken_at, crash_at), failures_at) << log;
+  EXPECT_NE(log.find("| ms.txt: broken", broken_at), std::string::npos) << log;
+  EXPECT_NE(log.find("| BM_Fast: crashed", crash_at), std::string::npos) << log;
+  EXPECT_NE(log.find("exited with code 3 at repetition 1", crash_at), std::string::npos) << log;
+  for (const auto& r : runs)
+    if (r.status == "ok") {
+      EXPECT_EQ(log.find(r.sha, failures_at), std::string::npos) << r.sha << " ran\n" << log;
+      EXPECT_EQ(r.seconds.at("BM_Fast").size(), 4u);
+    }
   const json broken = model::read_json_file(by_status["build_failed-"]->file);
   EXPECT_NE(broken["gearbench"]["log_tail"].get<std::string>().find("ms.txt: broken"), std::string::npos);
-  for (const auto& r : runs)
-    if (r.status == "ok") EXPECT_EQ(r.seconds.at("BM_Fast").size(), 4u);
   // report perf joins them in commit order and flags the doubling at the second commit.
   const std::string report = "report perf --dir '" + (dir / "records").string() + "' --out '" + (dir / "out").string() + "'";
   EXPECT_EQ(run_gearbench(report, dir / "log"), 1) << slurp(dir / "log");
