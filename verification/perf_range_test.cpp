@@ -5,6 +5,7 @@
 // script and a fake benchmark executable (no compiler, no benchmark, no wall time asserted).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -253,6 +254,62 @@ echo "$exe"
   EXPECT_EQ(run_gearbench(report, dir / "log"), 1) << slurp(dir / "log");
   EXPECT_NE(slurp(dir / "log").find("REGRESSION time BM_Fast: +100.0 %"), std::string::npos) << slurp(dir / "log");
   EXPECT_TRUE(fs::exists(dir / "out" / "figures" / "time_BM_Fast.csv"));
+  fs::remove_all(dir);
+}
+
+TEST(PerfRangeCli, EachCommitRunsOnItsOwnFilesAndBuild) {
+  // scripts/build-commit itself, on a tiny CMake project with no compiler: its "benchmark"
+  // is a shell script with the source folder configured in (as GEARBENCH_SOURCE_DIR is
+  // compiled into the real ones). BM_Case reads cases/ms.txt from there at run time, as
+  // BM_TehlPath reads its case; BM_Built starts the project's app/gearbench, a build product
+  // made from the same file, as BM_Startup starts gearbench. Two commits, 1 ms and 2 ms, are
+  // built one after the other in the same worktree: each must report its own time, not the
+  // last-built commit's.
+  const auto dir = fs::temp_directory_path() / ("gb_perf_tree_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "repo" / "scripts");
+  fs::create_directories(dir / "repo" / "cases");
+  const auto repo = (dir / "repo").string();
+  fs::copy_file(fs::path(GEARBENCH_SOURCE_DIR) / "scripts" / "build-commit", dir / "repo" / "scripts" / "build-commit");
+  std::ofstream(dir / "repo" / "CMakeLists.txt") << R"(cmake_minimum_required(VERSION 3.20)
+project(tiny LANGUAGES NONE)
+file(STRINGS cases/ms.txt MS)
+configure_file(app.in app/gearbench @ONLY FILE_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+configure_file(bench.in benchmarks/gearbench_benchmarks @ONLY FILE_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+add_custom_target(gearbench_benchmarks)
+)";
+  std::ofstream(dir / "repo" / "app.in") << "#!/bin/sh\necho @MS@\n";
+  std::ofstream(dir / "repo" / "bench.in") << R"SH(#!/bin/sh
+case_ms=$(cat '@PROJECT_SOURCE_DIR@/cases/ms.txt')
+built_ms=$('@PROJECT_BINARY_DIR@/app/gearbench')
+for a in "$@"; do case "$a" in --benchmark_out=*) out="${a#--benchmark_out=}";; esac; done
+run() { printf '{"name":"%s","run_name":"%s","run_type":"iteration","repetitions":1,"repetition_index":0,"iterations":1,"real_time":%s,"cpu_time":%s,"time_unit":"ms"}' "$1" "$1" "$2" "$2"; }
+printf '{"context":{},"benchmarks":[%s,%s]}' "$(run BM_Case "$case_ms")" "$(run BM_Built "$built_ms")" > "$out"
+)SH";
+  const std::string git = "git -C '" + repo + "' -c user.name=t -c user.email=t@t ";
+  shell(git + "init -q");
+  int day = 1;
+  for (const char* ms : {"0.5", "1.0", "2.0"}) {
+    std::ofstream(dir / "repo" / "cases" / "ms.txt") << ms << "\n";
+    shell(git + "add -A");
+    shell("GIT_COMMITTER_DATE='2026-11-0" + std::to_string(day) + "T00:00:00Z' " + git + "commit -q -m " + ms);
+    ++day;
+  }
+  const std::string args = "bench --commits HEAD~2..HEAD --repetitions 2 --filter BM_ --repo '" + repo +
+                           "' --workdir '" + (dir / "work").string() + "' --build-script '" + repo +
+                           "/scripts/build-commit' --out '" + (dir / "records").string() + "'";
+  ASSERT_EQ(run_gearbench(args, dir / "log"), 0) << slurp(dir / "log");
+  auto runs = load_perf_records((dir / "records").string());
+  ASSERT_EQ(runs.size(), 2u) << slurp(dir / "log");
+  std::sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) { return a.order_key < b.order_key; });
+  for (const auto& [k, seconds] : {std::pair{0, 1e-3}, std::pair{1, 2e-3}})
+    for (const char* name : {"BM_Case", "BM_Built"}) {
+      ASSERT_EQ(runs[k].seconds.count(name), 1u) << name << "\n" << slurp(dir / "log");
+      EXPECT_EQ(runs[k].seconds.at(name), (std::vector<double>{seconds, seconds})) << runs[k].sha << " " << name;
+    }
+  // The builds are removed at the end, the worktree with them.
+  EXPECT_FALSE(fs::exists(dir / "work" / "tree"));
+  EXPECT_FALSE(fs::exists(dir / "work" / "checkout"));
   fs::remove_all(dir);
 }
 
