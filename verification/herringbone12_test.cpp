@@ -11,6 +11,7 @@
 
 #include "checks/dynamics_reference.h"
 #include "closed_form/corner_contact.h"
+#include "stiffness/cubic_spline.h"
 #include "support/test_support.h"
 
 namespace gearbench {
@@ -131,6 +132,51 @@ TEST(Herringbone12, HalfMeshTablesAgreeWithTheSlicing) {
   for (int i = 0; i < 1000; ++i) mean += mesh.at(mesh.period() * i / 1000.0, 0.0).stiffness / 1000.0;
   EXPECT_NEAR(mean / mesh.mean_stiffness(), 1.0, 1e-12);  // the constant term is the table mean
   EXPECT_GT(mesh.mean().chi_pinion, 0.0);  // friction takes power out: the pinion arm opposes its torque
+}
+
+// The right-hand side evaluates k_m, its rate and the arms on one rotation (FourierSeries::
+// evaluate): the values must be value()'s bit for bit, the rate the series' derivative
+// (against a central difference at h = 1e-6 T, whose truncation is ~1e-12 relative).
+TEST(Herringbone12, SeriesEvaluatedTogetherAreTheSeriesAlone) {
+  const double period = 1.7e-3;
+  std::vector<double> a(180), b(180);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const double x = 2.0 * std::numbers::pi * static_cast<double>(i) / 180.0;
+    a[i] = 1e9 * (1.0 + 0.1 * std::cos(x) + 0.03 * std::sin(3.0 * x) + 0.01 * std::cos(7.0 * x + 0.2));
+    b[i] = 1e-3 * std::sin(2.0 * x) + 2e-4 * std::cos(5.0 * x);
+  }
+  const dynamics::FourierSeries fa(period, a, 24), fb(period, b, 24);
+  const std::array<const dynamics::FourierSeries*, 2> both{&fa, &fb};
+  for (const double t : {0.0, 0.3e-3, 1.1e-3, 5.0e-3}) {
+    std::array<double, 2> v{};
+    double rate = 0.0;
+    dynamics::FourierSeries::evaluate(t, both, v, rate);
+    EXPECT_EQ(v[0], fa.value(t));
+    EXPECT_EQ(v[1], fb.value(t));
+    const double h = 1e-6 * period;
+    const double difference = (fa.value(t + h) - fa.value(t - h)) / (2.0 * h);
+    EXPECT_NEAR(rate, difference, 1e3);  // the difference's rounding ε·k/h ≈ 1.4e2, against rates ~4e11
+  }
+  const dynamics::FourierSeries shorter(period, b, 12);
+  const std::array<const dynamics::FourierSeries*, 2> mixed{&fa, &shorter};
+  std::array<double, 2> v{};
+  double rate = 0.0;
+  EXPECT_THROW(dynamics::FourierSeries::evaluate(0.0, mixed, v, rate), std::logic_error);
+}
+
+// The spur pairs' rate dk/dt = u·dk/ds takes the spline's own derivative: against a central
+// difference of the spline (O(h²) with h = 1e-6 of the span, rounding ~1e-10 relative).
+TEST(Herringbone12, SplineDerivativeIsTheSplinesSlope) {
+  std::vector<double> x(101), y(101);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    x[i] = 0.01 * static_cast<double>(i);
+    y[i] = std::exp(-x[i]) * std::sin(3.0 * x[i]);
+  }
+  const stiffness::CubicSpline spline(x, y);
+  for (const double at : {0.0, 0.123, 0.5, 0.777, 1.0}) {
+    const double h = 1e-6, lo = std::max(0.0, at - h), hi = std::min(1.0, at + h);
+    EXPECT_NEAR(spline.derivative(at), (spline(hi) - spline(lo)) / (hi - lo), 1e-6) << at;
+  }
 }
 
 // The impact velocity v_s and the approach time Δt = 2δ̄/v_s of the model (docs/dynamics-model.md,

@@ -42,13 +42,21 @@ double FourierSeries::value(double t) const {
   return v;
 }
 
-double FourierSeries::derivative(double t) const {
-  const std::complex<double> step = std::polar(1.0, omega_ * t);
-  std::complex<double> e = step;
-  double v = 0.0;
-  for (std::size_t k = 1; k < a_.size(); ++k, e *= step)
-    v += omega_ * static_cast<double>(k) * (b_[k] * e.real() - a_[k] * e.imag());
-  return v;
+void FourierSeries::evaluate(double t, std::span<const FourierSeries* const> series, std::span<double> values,
+                             double& first_derivative) {
+  const FourierSeries& first = *series.front();
+  for (const FourierSeries* f : series)
+    if (f->a_.size() != first.a_.size() || f->omega_ != first.omega_)
+      throw std::logic_error("FourierSeries::evaluate: series of different periods or lengths");
+  std::fill(values.begin(), values.end(), 0.0);
+  first_derivative = 0.0;
+  // As value() does, term by term, on the same rotations.
+  const std::complex<double> step = std::polar(1.0, first.omega_ * t);
+  std::complex<double> e = 1.0;
+  for (std::size_t k = 0; k < first.a_.size(); ++k, e *= step) {
+    for (std::size_t j = 0; j < series.size(); ++j) values[j] += series[j]->a_[k] * e.real() + series[j]->b_[k] * e.imag();
+    if (k > 0) first_derivative += first.omega_ * static_cast<double>(k) * (first.b_[k] * e.real() - first.a_[k] * e.imag());
+  }
 }
 
 // ---- HalfMesh ---------------------------------------------------------------------------
@@ -170,10 +178,12 @@ std::array<double, 2> HalfMesh::arms(double t, double t_mid, double force) const
   const double x = std::min(std::abs(force) / (nominal_force_ / 4.0), static_cast<double>(load_levels));
   const auto l = std::min(static_cast<std::size_t>(x), static_cast<std::size_t>(load_levels - 1));
   const double f = x - static_cast<double>(l);
-  auto blend = [&](const std::vector<FourierSeries>& levels) {
-    return (1.0 - f) * levels[l].value(t) + f * levels[l + 1].value(t);
-  };
-  return {blend(chi_p_levels_), blend(chi_g_levels_)};
+  const std::array<const FourierSeries*, 4> series{&chi_p_levels_[l], &chi_p_levels_[l + 1], &chi_g_levels_[l],
+                                                    &chi_g_levels_[l + 1]};
+  std::array<double, 4> v{};
+  double unused = 0.0;
+  FourierSeries::evaluate(t, series, v, unused);
+  return {(1.0 - f) * v[0] + f * v[1], (1.0 - f) * v[2] + f * v[3]};
 }
 
 // Spur half: the pairs of the interval holding t_mid, those of the 6-DOF model (SpurMesh),
@@ -196,7 +206,11 @@ MeshPoint HalfMesh::spur_point(double t, double t_mid, double force) const {
 
 MeshPoint HalfMesh::at(double t, double t_mid) const {
   if (!k_) return spur_point(t, t_mid, nominal_force_);
-  return {k_->value(t), k_->derivative(t), chi_p_->value(t), chi_g_->value(t)};
+  const std::array<const FourierSeries*, 3> series{&*k_, &*chi_p_, &*chi_g_};
+  std::array<double, 3> v{};
+  double rate = 0.0;
+  FourierSeries::evaluate(t, series, v, rate);
+  return {v[0], rate, v[1], v[2]};
 }
 
 std::vector<double> HalfMesh::switch_times(double t0, double t1) const {

@@ -44,7 +44,11 @@ class FourierSeries {
  public:
   FourierSeries(double period, const std::vector<double>& y, int harmonics);
   [[nodiscard]] double value(double t) const;
-  [[nodiscard]] double derivative(double t) const;
+  /// The values of several series of one period and length at t, and the first one's
+  /// derivative, on one rotation e^{ikωt} (one sincos for all; no allocation): what a
+  /// right-hand side needs of k_m and the arms.
+  static void evaluate(double t, std::span<const FourierSeries* const> series, std::span<double> values,
+                       double& first_derivative);
   /// Largest |series − table| at the table's points.
   [[nodiscard]] double max_table_deviation() const { return deviation_; }
 

@@ -73,14 +73,19 @@ SpurPairs SpurMesh::pairs(double t, double t_mid) const {
     const bool cracked = crack_ && ((tooth % z1) + z1) % z1 == 0;
     // A pitch crack acts once the contact is above its mouth; a root crack always.
     const bool acting = cracked && (crack_->crack.type == stiffness::Crack::Type::root || s_mid > crack_mouth_);
-    // dk/dt = u·dk/ds by a central difference, one-sided at the path's ends.
-    const double h = 1e-6 * (path.E - path.A);
-    const double lo = std::max(path.A, s - h), hi = std::min(path.E, s + h);
     SpurPair& p = out.pair[out.count++];
     p.s = s;
     p.s_mid = s_mid;
     p.stiffness = pair_stiffness(s, cracked, acting);
-    p.rate = speed_ * (pair_stiffness(hi, cracked, acting) - pair_stiffness(lo, cracked, acting)) / (hi - lo);
+    if (cracked) {
+      // dk/dt = u·dk/ds by a central difference (the cracked pair is integrated directly),
+      // one-sided at the path's ends.
+      const double h = 1e-6 * (path.E - path.A);
+      const double lo = std::max(path.A, s - h), hi = std::min(path.E, s + h);
+      p.rate = speed_ * (pair_stiffness(hi, cracked, acting) - pair_stiffness(lo, cracked, acting)) / (hi - lo);
+    } else {
+      p.rate = speed_ * healthy_->derivative(s);  // dk/dt = u·dk/ds of the spline itself
+    }
     // The sliding direction of the whole interval (intervals end where a pair passes C).
     p.lambda = sliding_sign(s_mid, path.C);
   }

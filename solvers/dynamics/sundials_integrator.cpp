@@ -79,7 +79,7 @@ struct Callbacks {
 int rhs_trampoline(realtype t, N_Vector y, N_Vector ydot, void* data) {
   auto& c = *static_cast<Callbacks*>(data);
   try {
-    c.rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+    c.rhs(t, NV_DATA_S(y), NV_DATA_S(ydot));  // serial vectors: the data without a call through the ops table
     return 0;
   } catch (...) {
     c.error = std::current_exception();  // rethrown by advance() once the package returns
@@ -90,7 +90,7 @@ int rhs_trampoline(realtype t, N_Vector y, N_Vector ydot, void* data) {
 int root_trampoline(realtype t, N_Vector y, realtype* g, void* data) {
   auto& c = *static_cast<Callbacks*>(data);
   try {
-    c.roots(t, N_VGetArrayPointer(y), g);
+    c.roots(t, NV_DATA_S(y), g);
     return 0;
   } catch (...) {
     c.error = std::current_exception();

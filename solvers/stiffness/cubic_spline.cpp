@@ -24,4 +24,11 @@ double CubicSpline::operator()(double x) const {
   return y;
 }
 
+double CubicSpline::derivative(double x) const {
+  double dy = 0.0;
+  if (const int status = gsl_spline_eval_deriv_e(spline_.get(), x, accel_.get(), &dy); status != GSL_SUCCESS)
+    throw std::runtime_error(std::string("GSL spline derivative: ") + gsl_strerror(status));
+  return dy;
+}
+
 }  // namespace gearbench::stiffness

@@ -11,6 +11,8 @@ class CubicSpline {
  public:
   CubicSpline(std::vector<double> x, std::vector<double> y);
   [[nodiscard]] double operator()(double x) const;
+  /// dy/dx of the same cubic at x.
+  [[nodiscard]] double derivative(double x) const;
 
  private:
   std::vector<double> x_, y_;
