@@ -217,6 +217,16 @@ TEST(Cli, OilFilmStiffnessDoubleInvoluteRunsAndValidates) {
       {R"("mesh_samples": 0)", "mesh_samples = 0: allowed range is [1, 10000]"},
       {R"("gear_pair": {"helix_angle_deg": 0})", "no tooth pair is in contact"},
   }, "double_involute_bad");
+  // A thick oil (0.86 Pa s: M 1.7, L 27) on this grid gives a film that is *thicker* at the
+  // higher of the two loads, whereas Moes' film thins (d ln H/d ln M = −0.05 there): the solves'
+  // first-order errors differ by more than the 0.2 % response. Found by the mutation campaign
+  // (issue 20) as a negative film stiffness with exit 0; it must be exit 3 naming the cause.
+  auto thick = small;
+  thick["mesh_samples"] = 1;
+  thick["lubricant"]["viscosity_Pa_s"] = 0.86;
+  const auto t = run_gearbench("run " + write_case("double_involute_thick_oil", thick.dump()));
+  EXPECT_EQ(t.exit_code, 3) << t.err;
+  EXPECT_NE(t.err.find("is not thinner than at w(1 − δ)"), std::string::npos) << t.err;
 }
 
 TEST(Cli, DynamicsRunsAndValidates) {

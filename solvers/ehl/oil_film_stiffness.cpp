@@ -26,6 +26,24 @@ EhlResult converged_solve(const LineContactData& d, const EhlOptions& grid, doub
   return r;
 }
 
+/// k_oil = −Δw/Δh_c = −2δw/(h_c(w(1 + δ)) − h_c(w(1 − δ))) [N/m per metre of face width].
+/// An EHL film thins as the load rises in every regime (Moes' load exponents are all negative),
+/// so a film that is not thinner at the higher load is a difference the two solves did not
+/// resolve (their algebraic or discretisation errors differ by more than Δh_c): a
+/// ConvergenceError naming the position and the films, never a negative stiffness (issue 20).
+double film_stiffness_per_length(double h_plus, double h_minus, const LineContactData& d, double delta, double s) {
+  const double w = d.load_per_length;
+  if (!(h_plus < h_minus))
+    throw ConvergenceError(fmt::format(
+        "oil-film stiffness: at s = {:.4f} mm (M = {:.3g}, L = {:.3g}) the central film at the load w(1 + δ) = "
+        "{:.4g} N/m, {:.6g} µm, is not thinner than at w(1 − δ) = {:.4g} N/m, {:.6g} µm: the two EHL solves do not "
+        "resolve the film's response to a {:g} % load step (their discretisation errors, which differ between the "
+        "two loads, are larger; a finer grid, grid.levels, makes them smaller)",
+        s * 1e3, d.moes_M(), d.moes_L(), w * (1.0 + delta), h_plus * 1e6, w * (1.0 - delta), h_minus * 1e6,
+        100.0 * delta));
+  return -2.0 * delta * w / (h_plus - h_minus);
+}
+
 }  // namespace
 
 EhlOptions OilFilmStiffnessOptions::default_grid() {
@@ -105,7 +123,7 @@ OilFilmStiffnessResult OilFilmStiffness::solve() const {
     p.h_central = r0.h_central;
     p.h_min = r0.h_min;
     p.p_max = r0.p_max;
-    p.stiffness_per_length = -2.0 * delta * w / (rp.h_central - rm.h_central);
+    p.stiffness_per_length = film_stiffness_per_length(rp.h_central, rm.h_central, base, delta, s);
     p.stiffness = b * p.stiffness_per_length;
     p.pair_stiffness = pair.stiffness_per_width(s) * b;
     p.stiffness_with_film = 1.0 / (1.0 / p.pair_stiffness + 1.0 / p.stiffness);
@@ -148,12 +166,14 @@ MeshPeriodOilFilm::FilmPoint MeshPeriodOilFilm::film_at(double s, double load_pe
   d.u1 = k.u1;
   d.u2 = k.u2;
   const double delta = options_.perturbation;
+  d.load_per_length = load_per_length;
+  const LineContactData nominal = d;
   d.load_per_length = load_per_length * (1.0 + delta);
   const double h_plus = converged_solve(d, options_.grid, s).h_central;
   d.load_per_length = load_per_length * (1.0 - delta);
   const double h_minus = converged_solve(d, options_.grid, s).h_central;
   // The mean of the two films is h_c(w) to O(δ²) (4e-4 of h_c at δ = 2 %), without a third solve.
-  return {-2.0 * delta * load_per_length / (h_plus - h_minus), 0.5 * (h_plus + h_minus)};
+  return {film_stiffness_per_length(h_plus, h_minus, nominal, delta, s), 0.5 * (h_plus + h_minus)};
 }
 
 MeshPeriodOilFilmResult MeshPeriodOilFilm::solve() const {
