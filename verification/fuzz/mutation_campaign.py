@@ -2,13 +2,15 @@
 """Mutation campaign over every case kind (issue 20): runs `gearbench run` on mutated copies of
 the cases in cases/ and counts the outcomes per kind. A finding is a crash (signal), exit 1
 (internal error) on any input, an error message that is not one `error:` line, or an exit-0
-result that fails a plausibility rule (see `implausible`). Timeouts are counted apart.
+result that fails a plausibility rule (see `implausible`). A run past --timeout is kept and run
+again, once, with --retry-timeout: one that then finishes is counted by its outcome and listed
+as slow with its time; one that still does not is a finding ("hang").
 
 usage: mutation_campaign.py GEARBENCH CASES_DIR [--per-case N] [--seed S] [--timeout T]
-                             [--out DIR] [--skip KIND,...]
+                             [--retry-timeout T2] [--out DIR] [--skip KIND,...]
 Findings are kept as finding_<kind>_<case>_<n>.json in DIR, with a FINDING line each.
 """
-import argparse, collections, copy, json, math, os, random, subprocess, tempfile
+import argparse, collections, copy, json, math, os, random, subprocess, tempfile, time
 
 def leaves(node, path=()):
     if isinstance(node, dict):
@@ -117,17 +119,28 @@ def implausible(result):
             bad.append(f"{path} = {v}")
     return bad
 
+def run_case(gearbench, path, limit):
+    """`gearbench run path` with a time limit: (completed process, seconds), or (None, limit)."""
+    start = time.monotonic()
+    try:
+        p = subprocess.run([gearbench, "run", path], capture_output=True, text=True, timeout=limit)
+    except subprocess.TimeoutExpired:
+        return None, limit
+    return p, time.monotonic() - start
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("gearbench"); ap.add_argument("cases")
     ap.add_argument("--per-case", type=int, default=30); ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--timeout", type=float, default=20.0); ap.add_argument("--out", default="mutation_out")
+    ap.add_argument("--retry-timeout", type=float, default=600.0)
     ap.add_argument("--skip", default="")
     a = ap.parse_args()
     r = random.Random(a.seed)
     os.makedirs(a.out, exist_ok=True)
     counts = collections.defaultdict(collections.Counter)
     findings = []
+    slow = []  # (kind, case, mutation, seconds, exit code) of runs past --timeout that finished
     skip = set(a.skip.split(",")) if a.skip else set()
     files = sorted(f for f in os.listdir(a.cases) if f.endswith(".json"))
     for f in files:
@@ -140,13 +153,17 @@ def main():
             with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False, dir=a.out) as t:
                 json.dump(m, t)
                 path = t.name
-            try:
-                p = subprocess.run([a.gearbench, "run", path], capture_output=True, text=True, timeout=a.timeout)
-                code = p.returncode
-            except subprocess.TimeoutExpired:
-                counts[kind]["timeout"] += 1
-                os.unlink(path)
-                continue
+            p, seconds = run_case(a.gearbench, path, a.timeout)
+            if p is None:  # past the limit: once more with the long one
+                p, seconds = run_case(a.gearbench, path, a.retry_timeout)
+                if p is None:
+                    counts[kind]["hang"] += 1
+                    keep = os.path.join(a.out, f"finding_{kind}_{f[:-5]}_{n}.json")
+                    os.replace(path, keep)
+                    findings.append((kind, f, "hang", what, f"no result after {a.retry_timeout:g} s", keep))
+                    continue
+                slow.append((kind, f, what, seconds, p.returncode))
+            code = p.returncode
             errors = [l for l in p.stderr.splitlines() if l.startswith("error:")]
             if code < 0:
                 outcome = "crash"
@@ -170,12 +187,16 @@ def main():
             else:
                 os.unlink(path)
     total = collections.Counter()
-    print(f"{'kind':22s} " + " ".join(f"{c:>14s}" for c in ["exit 0", "exit 2", "exit 3", "timeout", "other"]))
+    columns = ["exit 0", "exit 2", "exit 3", "hang"]
+    print(f"{'kind':22s} " + " ".join(f"{c:>8s}" for c in columns + ["other", "slow"]))
+    slow_per_kind = collections.Counter(s[0] for s in slow)
     for kind, c in sorted(counts.items()):
         total.update(c)
-        other = sum(v for k, v in c.items() if k not in ("exit 0", "exit 2", "exit 3", "timeout"))
-        print(f"{kind:22s} " + " ".join(f"{c[k]:>14d}" for k in ["exit 0", "exit 2", "exit 3", "timeout"]) + f" {other:>14d}")
-    print("total", dict(total))
+        other = sum(v for k, v in c.items() if k not in columns)
+        print(f"{kind:22s} " + " ".join(f"{c[k]:>8d}" for k in columns) + f" {other:>8d} {slow_per_kind[kind]:>8d}")
+    print("total", dict(total), f"slow {len(slow)}")
+    for kind, case, what, seconds, code in slow:
+        print("SLOW", kind, case, what, f"{seconds:.1f} s", f"exit {code}", sep=" | ")
     for fnd in findings:
         print("FINDING", *fnd, sep=" | ")
 
