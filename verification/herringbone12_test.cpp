@@ -165,8 +165,9 @@ TEST(Herringbone12, SeriesEvaluatedTogetherAreTheSeriesAlone) {
 }
 
 // The spur pairs' rate dk/dt = u·dk/ds takes the spline's own derivative: against a central
-// difference of the spline (O(h²) with h = 1e-6 of the span, rounding ~1e-10 relative).
-TEST(Herringbone12, SplineDerivativeIsTheSplinesSlope) {
+// difference of the spline (O(h²) with h = 1e-6 of the span, rounding ~1e-10 relative); each
+// pair slot evaluates through its own cursor.
+TEST(Herringbone12, SplineDerivativeIsTheSplinesSlopeWithAnyCursor) {
   std::vector<double> x(101), y(101);
   for (std::size_t i = 0; i < x.size(); ++i) {
     x[i] = 0.01 * static_cast<double>(i);
@@ -176,6 +177,15 @@ TEST(Herringbone12, SplineDerivativeIsTheSplinesSlope) {
   for (const double at : {0.0, 0.123, 0.5, 0.777, 1.0}) {
     const double h = 1e-6, lo = std::max(0.0, at - h), hi = std::min(1.0, at + h);
     EXPECT_NEAR(spline.derivative(at), (spline(hi) - spline(lo)) / (hi - lo), 1e-6) << at;
+  }
+  // A caller's own cursor, alternating between distant points as the pairs of a mesh do,
+  // gives the same numbers as the spline's shared cache.
+  std::array<stiffness::CubicSpline::Cursor, 2> cursors;
+  for (int i = 0; i < 50; ++i) {
+    const double near = 0.005 * i, far = 0.9 - 0.004 * i;
+    EXPECT_EQ(spline(near, cursors[0]), spline(near));
+    EXPECT_EQ(spline(far, cursors[1]), spline(far));
+    EXPECT_EQ(spline.derivative(near, cursors[0]), spline.derivative(near));
   }
 }
 

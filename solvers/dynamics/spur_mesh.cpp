@@ -76,7 +76,7 @@ SpurPairs SpurMesh::pairs(double t, double t_mid) const {
     SpurPair& p = out.pair[out.count++];
     p.s = s;
     p.s_mid = s_mid;
-    p.stiffness = pair_stiffness(s, cracked, acting);
+    p.stiffness = cracked ? pair_stiffness(s, cracked, acting) : (*healthy_)(s, cursors_[static_cast<std::size_t>(j)]);
     if (cracked) {
       // dk/dt = u·dk/ds by a central difference (the cracked pair is integrated directly),
       // one-sided at the path's ends.
@@ -84,7 +84,7 @@ SpurPairs SpurMesh::pairs(double t, double t_mid) const {
       const double lo = std::max(path.A, s - h), hi = std::min(path.E, s + h);
       p.rate = speed_ * (pair_stiffness(hi, cracked, acting) - pair_stiffness(lo, cracked, acting)) / (hi - lo);
     } else {
-      p.rate = speed_ * healthy_->derivative(s);  // dk/dt = u·dk/ds of the spline itself
+      p.rate = speed_ * healthy_->derivative(s, cursors_[static_cast<std::size_t>(j)]);  // u·dk/ds of the spline itself
     }
     // The sliding direction of the whole interval (intervals end where a pair passes C).
     p.lambda = sliding_sign(s_mid, path.C);

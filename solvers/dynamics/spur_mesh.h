@@ -85,6 +85,7 @@ class SpurMesh {
   std::optional<stiffness::GearCrack> crack_;
   stiffness::PairStiffness pair_;
   std::optional<stiffness::CubicSpline> healthy_;
+  mutable std::array<stiffness::CubicSpline::Cursor, 3> cursors_;  ///< one per pair slot j of pairs()
   double speed_ = 0.0, period_ = 0.0, crack_mouth_ = 0.0, mean_stiffness_ = 0.0;
 };
 

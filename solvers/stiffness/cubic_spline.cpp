@@ -16,17 +16,21 @@ CubicSpline::CubicSpline(std::vector<double> x, std::vector<double> y)
     throw std::runtime_error(std::string("GSL spline: ") + gsl_strerror(status));
 }
 
-double CubicSpline::operator()(double x) const {
+CubicSpline::Cursor::Cursor() : accel_(gsl_interp_accel_alloc(), &gsl_interp_accel_free) {
+  if (!accel_) throw std::runtime_error("GSL interpolation accelerator allocation failed");
+}
+
+double CubicSpline::value(double x, gsl_interp_accel* accel) const {
   double y = 0.0;
   // The accelerator caches the last interval; evaluation is read-only otherwise.
-  if (const int status = gsl_spline_eval_e(spline_.get(), x, accel_.get(), &y); status != GSL_SUCCESS)
+  if (const int status = gsl_spline_eval_e(spline_.get(), x, accel, &y); status != GSL_SUCCESS)
     throw std::runtime_error(std::string("GSL spline evaluation: ") + gsl_strerror(status));
   return y;
 }
 
-double CubicSpline::derivative(double x) const {
+double CubicSpline::slope(double x, gsl_interp_accel* accel) const {
   double dy = 0.0;
-  if (const int status = gsl_spline_eval_deriv_e(spline_.get(), x, accel_.get(), &dy); status != GSL_SUCCESS)
+  if (const int status = gsl_spline_eval_deriv_e(spline_.get(), x, accel, &dy); status != GSL_SUCCESS)
     throw std::runtime_error(std::string("GSL spline derivative: ") + gsl_strerror(status));
   return dy;
 }
