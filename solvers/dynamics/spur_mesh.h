@@ -85,7 +85,9 @@ class SpurMesh {
   std::optional<stiffness::GearCrack> crack_;
   stiffness::PairStiffness pair_;
   std::optional<stiffness::CubicSpline> healthy_;
-  mutable std::array<stiffness::CubicSpline::Cursor, 3> cursors_;  ///< one per pair slot j of pairs()
+  /// One spline cursor per pair slot j of pairs(): a cache that const calls move, so a SpurMesh
+  /// is not to be shared between threads.
+  mutable std::array<stiffness::CubicSpline::Cursor, 3> cursors_;
   double speed_ = 0.0, period_ = 0.0, crack_mouth_ = 0.0, mean_stiffness_ = 0.0;
 };
 

@@ -26,22 +26,37 @@ EhlResult converged_solve(const LineContactData& d, const EhlOptions& grid, doub
   return r;
 }
 
-/// k_oil = −Δw/Δh_c = −2δw/(h_c(w(1 + δ)) − h_c(w(1 − δ))) [N/m per metre of face width].
+/// The steady solves at the loads w(1 ± δ) of a nominal contact and the film stiffness
+/// between them, k_oil = −Δw/Δh_c = −2δw/(h_c(w(1 + δ)) − h_c(w(1 − δ))) [N/m per metre of
+/// face width], a central difference (error O(δ²)).
+struct LoadStep {
+  EhlResult plus, minus;
+  double stiffness_per_length = 0.0;
+};
+
 /// An EHL film thins as the load rises in every regime (Moes' load exponents are all negative),
 /// so a film that is not thinner at the higher load is a difference the two solves did not
 /// resolve (their algebraic or discretisation errors differ by more than Δh_c): a
 /// ConvergenceError naming the position and the films, never a negative stiffness (issue 20).
-double film_stiffness_per_length(double h_plus, double h_minus, const LineContactData& d, double delta, double s) {
-  const double w = d.load_per_length;
+LoadStep solve_load_step(const LineContactData& nominal, const EhlOptions& grid, double delta, double s) {
+  const double w = nominal.load_per_length;
+  LineContactData d = nominal;
+  LoadStep step;
+  d.load_per_length = w * (1.0 + delta);
+  step.plus = converged_solve(d, grid, s);
+  d.load_per_length = w * (1.0 - delta);
+  step.minus = converged_solve(d, grid, s);
+  const double h_plus = step.plus.h_central, h_minus = step.minus.h_central;
   if (!(h_plus < h_minus))
     throw ConvergenceError(fmt::format(
         "oil-film stiffness: at s = {:.4f} mm (M = {:.3g}, L = {:.3g}) the central film at the load w(1 + δ) = "
         "{:.4g} N/m, {:.6g} µm, is not thinner than at w(1 − δ) = {:.4g} N/m, {:.6g} µm: the two EHL solves do not "
         "resolve the film's response to a {:g} % load step (their discretisation errors, which differ between the "
         "two loads, are larger; a finer grid, grid.levels, makes them smaller)",
-        s * 1e3, d.moes_M(), d.moes_L(), w * (1.0 + delta), h_plus * 1e6, w * (1.0 - delta), h_minus * 1e6,
-        100.0 * delta));
-  return -2.0 * delta * w / (h_plus - h_minus);
+        s * 1e3, nominal.moes_M(), nominal.moes_L(), w * (1.0 + delta), h_plus * 1e6, w * (1.0 - delta),
+        h_minus * 1e6, 100.0 * delta));
+  step.stiffness_per_length = -2.0 * delta * w / (h_plus - h_minus);
+  return step;
 }
 
 }  // namespace
@@ -112,8 +127,9 @@ OilFilmStiffnessResult OilFilmStiffness::solve() const {
     const double w = sharing->share(geometry_, s) * w_total;
     const auto base = contact_at(s, w);
     const auto r0 = solve_contact(base, s);
-    const auto rp = solve_contact(contact_at(s, w * (1.0 + delta)), s);
-    const auto rm = solve_contact(contact_at(s, w * (1.0 - delta)), s);
+    const auto step = solve_load_step(base, options_.grid, delta, s);
+    const auto& rp = step.plus;
+    const auto& rm = step.minus;
 
     OilFilmPoint p;
     p.position = s;
@@ -123,7 +139,7 @@ OilFilmStiffnessResult OilFilmStiffness::solve() const {
     p.h_central = r0.h_central;
     p.h_min = r0.h_min;
     p.p_max = r0.p_max;
-    p.stiffness_per_length = film_stiffness_per_length(rp.h_central, rm.h_central, base, delta, s);
+    p.stiffness_per_length = step.stiffness_per_length;
     p.stiffness = b * p.stiffness_per_length;
     p.pair_stiffness = pair.stiffness_per_width(s) * b;
     p.stiffness_with_film = 1.0 / (1.0 / p.pair_stiffness + 1.0 / p.stiffness);
@@ -165,15 +181,10 @@ MeshPeriodOilFilm::FilmPoint MeshPeriodOilFilm::film_at(double s, double load_pe
   d.reduced_radius = k.reduced_radius_normal;
   d.u1 = k.u1;
   d.u2 = k.u2;
-  const double delta = options_.perturbation;
   d.load_per_length = load_per_length;
-  const LineContactData nominal = d;
-  d.load_per_length = load_per_length * (1.0 + delta);
-  const double h_plus = converged_solve(d, options_.grid, s).h_central;
-  d.load_per_length = load_per_length * (1.0 - delta);
-  const double h_minus = converged_solve(d, options_.grid, s).h_central;
+  const auto step = solve_load_step(d, options_.grid, options_.perturbation, s);
   // The mean of the two films is h_c(w) to O(δ²) (4e-4 of h_c at δ = 2 %), without a third solve.
-  return {film_stiffness_per_length(h_plus, h_minus, nominal, delta, s), 0.5 * (h_plus + h_minus)};
+  return {step.stiffness_per_length, 0.5 * (step.plus.h_central + step.minus.h_central)};
 }
 
 MeshPeriodOilFilmResult MeshPeriodOilFilm::solve() const {
