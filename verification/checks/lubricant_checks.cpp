@@ -8,6 +8,8 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
+#include <string>
 #include <vector>
 #include <fmt/format.h>
 
@@ -53,11 +55,23 @@ const PublishedOil table_2_3[] = {
     {"cylinder oil", {2000, 180, 24}, {41.5, 29.4, 25.0}},
 };
 
+/// The one non-mineral oil of table 2.3 the copy at hand shows: an ethylene oxide–propylene
+/// oxide copolymer (a polyalkylene glycol, PAG). Its α is legible at 30 °C only: the only copy
+/// reached (a transcription of the book) cuts the row after its first α.
+const PublishedOil table_2_3_pag{"ethylene oxide–propylene oxide copolymer (PAG)", {204, 62.5, 22.5},
+                                 {17.6, no_value, no_value}};
+
+/// ρ15 [kg/m³] of a base oil in the catalogue (the table gives no density).
+double catalogue_rho15(BaseOil base) {
+  const auto& c = Catalogue::builtin();
+  return c.grade(220, base, std::nullopt, "grade").density_15C->value;
+}
+
 /// η(θ) [mPa·s] from the ASTM D341 line through the table's 30 and 100 °C values. The table
 /// gives dynamic viscosities; D341 is a law of kinematic viscosity, so each is divided by the
-/// density of ISO/TR 15144-1 (20) with the catalogue's mineral ρ15 (the table gives none).
-double d341_eta(const PublishedOil& oil, double theta) {
-  const double rho15 = 902.0;  // catalogue, base_oils.mineral (GEARpie's MINR)
+/// density of ISO/TR 15144-1 (20) with the catalogue's ρ15 of the base (the table gives none).
+double d341_eta(const PublishedOil& oil, double theta, BaseOil base = BaseOil::mineral) {
+  const double rho15 = catalogue_rho15(base);  // mineral: 902 kg/m³ (GEARpie's MINR); PAG: 1059 (PAGD)
   const auto rho = [&](double c) { return lubricant::iso15144_density(rho15, c + celsius_zero); };
   const lubricant::WaltherLine line(30.0 + celsius_zero, oil.eta[0] / rho(30.0) * 1e3, 100.0 + celsius_zero,
                                     oil.eta[2] / rho(100.0) * 1e3);
@@ -86,6 +100,67 @@ void register_d341(const char* id, const PublishedOil& oil) {
 const bool d341_registered = [] {
   register_d341("lubricant.astm_d341.heavy_machine_oil", table_2_3[1]);
   register_d341("lubricant.astm_d341.cylinder_oil", table_2_3[3]);
+  // The PAG of the same table: does the two-point line hold for it as well as for the table's
+  // mineral oils? Their worst miss at 60 °C (12 %) is the bound.
+  Registry::instance().add(CheckSpec{
+      .id = "lubricant.astm_d341.eo_po_copolymer", .section = section, .solver = solver,
+      .reference = "Stachowiak & Batchelor, Engineering Tribology, table 2.3: ethylene oxide–propylene oxide copolymer "
+                   "(a PAG; 204, 62.5, 22.5 mPa·s at 30, 60, 100 °C)",
+      .quantity = "dynamic viscosity at 60 °C by ASTM D341 through 30 and 100 °C", .unit = "mPa·s",
+      .tolerance = {0.0, 0.12},
+      .justification = "the base the catalogue calls PAG, on the law the catalogue uses for it (D341 is written for "
+                       "petroleum oils): the bound is the line's worst miss over the 12 mineral oils of the same table "
+                       "(12 %, the light machine oil; median 1.2 %), so the check asks whether the PAG is within the "
+                       "spread of those oils. It misses by +5.3 %; the table gives no density (the catalogue's PAG ρ15 "
+                       "1059 kg/m³ is assumed; ±50 kg/m³ moves the result by ±0.2 %)",
+      .tier = Tier::fast,
+      .run = [](const CheckContext&) {
+        return CheckValue{d341_eta(table_2_3_pag, 60.0, BaseOil::pag), table_2_3_pag.eta[1]};
+      }});
+  return true;
+}();
+
+/// ISO/TR 15144-1 (21): the density at 15 °C the TR estimates from ν40 [mm²/s] when an oil's is
+/// not known, ρ15 ≈ 43.37·lg ν40 + 805.5 kg/m³ (as the public port of the TR behind
+/// docs/iso15144.md gives it; verification data here, not a catalogue figure). The port applies it
+/// to every base; the peer's PAO and PAG densities are 6 % below and 16 % above it, so only the
+/// mineral ones are checked against it.
+double iso15144_rho15_estimate(double nu40) { return 43.37 * std::log10(nu40) + 805.5; }
+
+const char* density_justification =
+    "a plausibility bound, not a measurement uncertainty: the TR's estimate (a regression whose scatter the port does "
+    "not state) is 0.7 % above the one measured mineral gear-oil density at hand (FVA 3A, Manjunath et al. 2023, "
+    "printed without its temperature: read at 20 °C instead of 15 °C it would be 0.4 % higher); 2 % allows both, and "
+    "a mineral ρ15 outside it would be suspect";
+
+void register_density(const char* id, const std::string& reference, const std::string& quantity, double nu40,
+                      std::function<double()> density) {
+  Registry::instance().add(CheckSpec{
+      .id = id, .section = section, .solver = solver, .reference = reference, .quantity = quantity, .unit = "kg/m³",
+      .tolerance = {0.0, 0.02}, .justification = density_justification, .tier = Tier::fast,
+      .run = [nu40, density](const CheckContext&) { return CheckValue{density(), iso15144_rho15_estimate(nu40)}; }});
+}
+
+double catalogue_oil_rho15(const std::string& name) {
+  return Catalogue::builtin().find(name, "name").density_15C->value;
+}
+
+const bool density_registered = [] {
+  // The measurement against the TR's estimate: how far the estimate is from a real oil.
+  register_density("lubricant.density.fva3a_measured",
+                   "ISO/TR 15144-1 (21) at FVA 3A's nu40 = 90.02 mm²/s (Manjunath et al. 2023, table 3): 890.3 kg/m³",
+                   "ρ15 of 'FVA 3A' (measured, Manjunath et al. 2023, table 3)", 90.02,
+                   [] { return catalogue_oil_rho15("FVA 3A"); });
+  // The peer's mineral densities against the same estimate: ρ15 of every mineral grade and of
+  // FEUP MINR (902) and FVA 3 (900) come from GEARpie.
+  register_density("lubricant.density.gearpie_mineral",
+                   "ISO/TR 15144-1 (21) at FEUP MINR's nu40 = 316.0 mm²/s: 913.9 kg/m³",
+                   "mineral ρ15 of the catalogue (GEARpie's MINR, used for every mineral grade)", 316.0,
+                   [] { return catalogue_rho15(BaseOil::mineral); });
+  register_density("lubricant.density.gearpie_fva3",
+                   "ISO/TR 15144-1 (21) at FVA 3's nu40 = 99.39 mm²/s: 892.1 kg/m³",
+                   "ρ15 of 'FVA 3' (GEARpie / Gear-Calculation)", 99.39,
+                   [] { return catalogue_oil_rho15("FVA 3"); });
   return true;
 }();
 
@@ -258,6 +333,33 @@ void add_alpha_against_asme(const CheckContext&, reports::Report& report) {
       "{:+.1f} %. The same formula is within 5 % of FVA 3A's 2023 measurement (checks lubricant.alpha.fva3a_*): a case "
       "with a measured α for its oil should give it.",
       deviations.size(), deviations.front(), deviations.back(), deviations[deviations.size() / 2])});
+
+  // The PAG row of the same table against ISO/TR 15144-1 (11), the catalogue's PAG formula.
+  const double eta38 = d341_eta(table_2_3_pag, 38.0, BaseOil::pag) * 1e-3;
+  const double alpha30 = *c.iso15144_pressure_viscosity(BaseOil::pag, eta38, 30.0 + celsius_zero) * 1e9;
+  report.notes.push_back({section, fmt::format(
+      "ISO/TR 15144-1's PAG formula (11) (the catalogue's), fed with η38 = {:.1f} mPa·s from the D341 line through the "
+      "30 and 100 °C values of the ethylene oxide–propylene oxide copolymer of Stachowiak & Batchelor's table 2.3 (ρ15 "
+      "{} kg/m³ assumed), gives α = {:.2f} 1/GPa at 30 °C against the {} 1/GPa measured ({:+.0f} %); the row's 60 and "
+      "100 °C values could not be read. One oil, one temperature: no bound for PAGs, but the formula may be as low for "
+      "them as for the mineral oils above.",
+      eta38 * 1e3, catalogue_rho15(BaseOil::pag), alpha30, table_2_3_pag.alpha[0],
+      100.0 * (alpha30 / table_2_3_pag.alpha[0] - 1.0))});
+
+  // The peer's densities of the other bases against ISO/TR 15144-1 (21) (a mineral-oil estimate).
+  std::string rows;
+  for (const char* name : {"FEUP MINR", "FEUP PAOR", "FEUP ESTR", "FEUP PAGD"}) {
+    const auto oil = c.find(name, "name");
+    const double estimate = iso15144_rho15_estimate(oil.nu40->value);
+    rows += fmt::format("{}{} {:.0f} vs {:.1f} kg/m³ ({:+.1f} %)", rows.empty() ? "" : ", ", name,
+                        oil.density_15C->value, estimate, 100.0 * (oil.density_15C->value / estimate - 1.0));
+  }
+  report.notes.push_back({section, fmt::format(
+      "The peer's (GEARpie's) ρ15 of the four FEUP oils, used for every grade of their base, against ISO/TR 15144-1 "
+      "(21)'s estimate from their ν40: {}. The mineral value agrees with the TR's estimate (checks lubricant.density.*) "
+      "and the ester's does too; the PAO's and the PAG's do not, and the port applies the estimate to every base: it "
+      "is no check of those two, whose ρ15 stay the peer's.",
+      rows)});
 }
 
 const RegisterSection alpha_asme_section(SectionSpec{
