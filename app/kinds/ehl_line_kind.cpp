@@ -40,8 +40,7 @@ ehl::LineContactData read_moes(model::ObjectReader& root) {
 
 json result_json(const ehl::LineContactProblem& p, const ehl::EhlResult& r) {
   const auto& d = p.data();
-  const double U_sum = d.viscosity * (d.u1 + d.u2) / (d.reduced_modulus * d.reduced_radius);
-  const double to_moes = 1.0 / (d.reduced_radius * std::sqrt(U_sum));
+  const double to_moes = 1.0 / d.moes_film_scale();
   return {
       {"kind", "ehl_line"},
       {"h_central_m", finite_or_null(r.h_central)},

@@ -424,9 +424,7 @@ class FasMultigrid::Impl {
       if (std::abs(l.X[i]) < 1.0) h_in_contact = std::min(h_in_contact, l.H[i]);
     const double M = problem_.data().moes_M();
     const double H_moes = std::pow(std::pow(3.0 / M, 7.0 / 3.0) + std::pow(2.621 * std::pow(M, -0.2), 7.0 / 3.0), 3.0 / 7.0);
-    const double U_sum = problem_.data().viscosity * 2.0 * problem_.data().mean_speed() /
-                         (problem_.data().reduced_modulus * problem_.data().reduced_radius);
-    const double h_guess = H_moes * std::sqrt(U_sum) * problem_.data().reduced_radius;
+    const double h_guess = H_moes * problem_.data().moes_film_scale();
     film_guess_ = h_guess / problem_.film_scale();
     H0_ = film_guess_ - h_in_contact;
     update_film(l);

@@ -15,15 +15,15 @@ constexpr double martin_load_constant = 4.8950;  // w·h0/(η0·ū·R), Reynolds
 constexpr double moes_switch = 3.0;              // Hertzian scaling from M = 3 upward
 }  // namespace
 
+double LineContactData::moes_speed_sum() const { return viscosity * (u1 + u2) / (reduced_modulus * reduced_radius); }
+
+double LineContactData::moes_film_scale() const { return reduced_radius * std::sqrt(moes_speed_sum()); }
+
 double LineContactData::moes_M() const {
-  const double U_sum = viscosity * (u1 + u2) / (reduced_modulus * reduced_radius);
-  return load_per_length / (reduced_modulus * reduced_radius) / std::sqrt(U_sum);
+  return load_per_length / (reduced_modulus * reduced_radius) / std::sqrt(moes_speed_sum());
 }
 
-double LineContactData::moes_L() const {
-  const double U_sum = viscosity * (u1 + u2) / (reduced_modulus * reduced_radius);
-  return pressure_viscosity * reduced_modulus * std::pow(U_sum, 0.25);
-}
+double LineContactData::moes_L() const { return pressure_viscosity * reduced_modulus * std::pow(moes_speed_sum(), 0.25); }
 
 LineContactData LineContactData::from_moes(double M, double L) {
   LineContactData d;
@@ -31,7 +31,7 @@ LineContactData LineContactData::from_moes(double M, double L) {
   d.reduced_modulus = 2.2e11;
   d.viscosity = 0.04;
   d.u1 = d.u2 = 1.0;
-  const double U_sum = d.viscosity * (d.u1 + d.u2) / (d.reduced_modulus * d.reduced_radius);
+  const double U_sum = d.moes_speed_sum();
   d.load_per_length = M * std::sqrt(U_sum) * d.reduced_modulus * d.reduced_radius;
   d.pressure_viscosity = L / std::pow(U_sum, 0.25) / d.reduced_modulus;
   d.viscosity_model = ViscosityModel::barus;

@@ -36,6 +36,10 @@ struct LineContactData {
   /// Moes' M = W·U_Σ^(−1/2) and L = G·U_Σ^(1/4), U_Σ = η0(u1+u2)/(E′R), W = w/(E′R), G = αE′.
   [[nodiscard]] double moes_M() const;
   [[nodiscard]] double moes_L() const;
+  /// Moes' speed parameter U_Σ = η0(u1 + u2)/(E′R).
+  [[nodiscard]] double moes_speed_sum() const;
+  /// Metres per Moes film unit, R·√U_Σ: Moes' film H = (h/R)·U_Σ^(−1/2) is h over it.
+  [[nodiscard]] double moes_film_scale() const;
   /// Dimensional data with the given Moes M and L (Barus, incompressible): R = 0.01 m,
   /// E′ = 2.2e11 Pa, η0 = 0.04 Pa·s, u1 = u2 fixed; w and α chosen to meet M and L.
   static LineContactData from_moes(double M, double L);
