@@ -12,6 +12,7 @@
 #include "checks/dynamics_reference.h"
 #include "closed_form/corner_contact.h"
 #include "stiffness/cubic_spline.h"
+#include "support/convergence.h"
 #include "support/test_support.h"
 
 namespace gearbench {
@@ -43,6 +44,7 @@ dynamics::Herringbone12Options fast_options() {
 }
 
 using verification::herringbone_reference;
+using verification::observed_order;
 
 TEST(Herringbone12, RejectsBadInputNamingTheKey) {
   const geometry::GearPairGeometry herringbone(seed000_pair());
@@ -107,7 +109,7 @@ TEST(Herringbone12, ReferenceRk4HasOrderFourAcrossImpactPulses) {
   std::vector<double> delta;
   for (const double steps : {512.0, 1024.0, 2048.0})
     delta.push_back(reference::herringbone12_rk4(p, y0, 2 * T, T / steps, 2 * T).back().delta[0]);
-  const double order = std::log2(std::abs(delta[0] - delta[1]) / std::abs(delta[1] - delta[2]));
+  const double order = observed_order(delta[0], delta[1], delta[2]);
   std::printf("[ measured ] herringbone RK4 observed order %.3f (δ differences %.2e, %.2e m)\n", order,
               std::abs(delta[0] - delta[1]), std::abs(delta[1] - delta[2]));
   EXPECT_GE(order, 3.6);

@@ -1,17 +1,15 @@
 #pragma once
-// What the steady EHL checks share: Moes' film units, a grid series of one Moes point, and the
-// observed order and Richardson value of such a series.
-#include <cmath>
+// What the steady EHL checks share: Moes' film units and a grid series of one Moes point (its
+// observed order and Richardson value come from the convergence kit, support/convergence.h).
 #include <vector>
 
 #include "ehl/line_contact_problem.h"
+#include "support/convergence.h"
 
 namespace gearbench::verification {
 
 /// 1/(R·√U_Σ): metres to Moes' film H = (h/R)·U_Σ^(−1/2), U_Σ = η0(u1 + u2)/(E′R).
-inline double moes_units(const ehl::LineContactData& d) {
-  return 1.0 / (d.reduced_radius * std::sqrt(d.viscosity * (d.u1 + d.u2) / (d.reduced_modulus * d.reduced_radius)));
-}
+inline double moes_units(const ehl::LineContactData& d) { return 1.0 / d.moes_film_scale(); }
 
 /// H_c, H_min (Moes units) and p_max/p_h on 6 grids, each twice as fine as the last.
 struct GridSeries {
@@ -35,13 +33,10 @@ struct MapPoint {
 /// per process (the report's map and the check that holds it share the solves).
 const std::vector<MapPoint>& moes_map();
 
-/// log2 of the ratio of the last two changes of a series on grids halving h.
-inline double observed_order(const std::vector<double>& v) {
-  const std::size_t n = v.size();
-  return std::log2((v[n - 3] - v[n - 2]) / (v[n - 2] - v[n - 1]));
+/// Richardson extrapolation of the two finest values of a series for the multigrid's
+/// first-order scheme (docs/ehl-model.md).
+inline double first_order_richardson(const std::vector<double>& v) {
+  return richardson(v[v.size() - 2], v.back(), 1.0);
 }
-
-/// Richardson extrapolation of the two finest values for a first-order scheme.
-inline double richardson(const std::vector<double>& v) { return 2.0 * v.back() - v[v.size() - 2]; }
 
 }  // namespace gearbench::verification

@@ -99,7 +99,7 @@ const RegisterCheck high_L_order(CheckSpec{
       const auto s = grid_series(20.0, 10.0, 41);  // 321 … 10241 nodes
       return CheckValue{observed_order(s.H_c), 1.0,
                         {{"nodes", s.nodes}, {"H_c", s.H_c}, {"H_min", s.H_min}, {"p_max_over_p_h", s.p_max},
-                         {"order_H_min", observed_order(s.H_min)}, {"richardson_H_c", richardson(s.H_c)}}};
+                         {"order_H_min", observed_order(s.H_min)}, {"richardson_H_c", first_order_richardson(s.H_c)}}};
     }});
 
 const RegisterCheck rigid_corner(CheckSpec{

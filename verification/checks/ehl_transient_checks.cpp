@@ -8,6 +8,7 @@
 #include "check_registry.h"
 #include "ehl/transient_mesh_ehl.h"
 #include "geometry/gear_pair_geometry.h"
+#include "support/convergence.h"
 
 namespace gearbench::verification {
 namespace {
@@ -156,7 +157,7 @@ const RegisterCheck time_order(CheckSpec{
       std::vector<double> h;
       for (int steps : {50, 100, 200})
         h.push_back(run_seed004(ctx, steps, 4, 1e-9).steps.at(static_cast<std::size_t>(steps / 5)).h_central);
-      return CheckValue{std::log2(std::abs((h[0] - h[1]) / (h[1] - h[2]))), 1.0, {{"h_central_m", h}}};
+      return CheckValue{observed_order(h[0], h[1], h[2]), 1.0, {{"h_central_m", h}}};
     }});
 
 void add_mesh_figures(const CheckContext& ctx, reports::Report& report) {

@@ -8,6 +8,7 @@
 #include "closed_form/ehl_closed_form.h"
 #include "ehl/oil_film_stiffness.h"
 #include "geometry/gear_pair_geometry.h"
+#include "support/convergence.h"
 
 namespace gearbench::verification {
 namespace {
@@ -50,7 +51,7 @@ const RegisterCheck perturbation_order(CheckSpec{
     .tier = Tier::fast, .run = [](const CheckContext& ctx) {
       const double k16 = mid_path(ctx, 0.16).stiffness, k8 = mid_path(ctx, 0.08).stiffness,
                    k4 = mid_path(ctx, 0.04).stiffness;
-      return CheckValue{std::log2(std::abs((k16 - k8) / (k8 - k4))), 2.0,
+      return CheckValue{observed_order(k16, k8, k4), 2.0,
                         {{"k_oil_N_per_m", {k16, k8, k4}}, {"relative_change_8_to_4", std::abs(k8 - k4) / k4}}};
     }});
 

@@ -11,6 +11,7 @@
 #include "ehl/thermal_mesh_path.h"
 #include "model/case_reader.h"
 #include "model/json_reader.h"
+#include "support/convergence.h"
 #include "support/thermal_fixtures.h"
 #include "tehl_micropitting.h"
 
@@ -118,10 +119,6 @@ const RegisterCheck heat_balance(CheckSpec{
                          {"solid_outflow_W_per_m", r.heat.solid_outflow}, {"depth_loss_W_per_m", r.heat.depth_loss}}};
     }});
 
-/// Observed order from three values on grids refined by 2: log2(|f1 − f2|/|f2 − f3|).
-double observed_order(const std::vector<double>& f) {
-  return std::log2(std::abs((f[0] - f[1]) / (f[1] - f[2])));
-}
 
 const RegisterCheck film_nodes(CheckSpec{
     .id = "tehl.film_grid_convergence", .section = section, .solver = solver,
