@@ -1,4 +1,4 @@
-// ISO/TR 15144-1 method B (reference/closed_form/iso15144_micropitting): each formula against a
+// ISO/TR 15144-1 method B (solvers/micropitting/iso15144_micropitting): each formula against a
 // hand value or the closed form it must equal, and consistency of the seven-point evaluation.
 // No published worked example of the TR could be found in this session (Annex B's numbers are
 // not available here), so there is no end-to-end number to reproduce; see docs/iso15144.md.
@@ -12,13 +12,14 @@
 #include <numbers>
 
 #include "closed_form/involute_closed_form.h"
-#include "closed_form/iso15144_micropitting.h"
+#include "micropitting/iso15144_micropitting.h"
 #include "kind_registry.h"
 #include "model/errors.h"
 #include "model/json_reader.h"
 
-namespace gearbench::reference::iso15144 {
+namespace gearbench::micropitting::iso15144 {
 namespace {
+using reference::involute_closed_form;
 
 constexpr double rounding = 1e-12;
 constexpr double deg = std::numbers::pi / 180.0;
@@ -267,4 +268,4 @@ TEST(Iso15144Kind, SeedCaseRunsAndReportsEveryPoint) {
 }
 
 }  // namespace
-}  // namespace gearbench::reference::iso15144
+}  // namespace gearbench::micropitting::iso15144

@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "geometry/gear_pair_geometry.h"
-#include "iso15144_section.h"
+#include "micropitting/iso15144_case.h"
 #include "kind_registry.h"
 #include "model/case_reader.h"
 #include "model/errors.h"
@@ -13,7 +13,8 @@ namespace gearbench::app {
 namespace {
 
 using nlohmann::json;
-namespace iso = reference::iso15144;
+namespace iso = micropitting::iso15144;
+using micropitting::read_micropitting;
 constexpr double to_deg = 180.0 / std::numbers::pi;
 
 json point_json(const iso::PointResult& y) {

@@ -12,13 +12,17 @@
 #include "model/case_reader.h"
 #include "model/errors.h"
 #include "model/json_reader.h"
-#include "tehl_micropitting.h"
+#include "micropitting/tehl_micropitting.h"
 #include "tehl_sections.h"
 
 namespace gearbench::app {
 namespace {
 
 using nlohmann::json;
+using micropitting::compare_with_iso;
+using micropitting::micropitting_json;
+using micropitting::MicropittingCase;
+using micropitting::read_micropitting;
 
 ConvergenceError not_converged(const ehl::ThermalEhlResult& r, const json& out) {
   return ConvergenceError(fmt::format("thermal EHL did not converge: {}", r.summary()), out.dump(2));

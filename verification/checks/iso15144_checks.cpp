@@ -10,27 +10,27 @@
 
 #include "check_registry.h"
 #include "closed_form/ehl_closed_form.h"
-#include "closed_form/iso15144_micropitting.h"
+#include "micropitting/iso15144_micropitting.h"
 #include "geometry/gear_pair_geometry.h"
-#include "iso15144_section.h"
+#include "micropitting/iso15144_case.h"
 #include "model/json_reader.h"
 
 namespace gearbench::verification {
 namespace {
 
-namespace iso = reference::iso15144;
+namespace iso = micropitting::iso15144;
 
 const char* section = "Micropitting, ISO/TR 15144-1 method B (seed 001)";
 const char* solver = "iso15144 (reference/closed_form)";
 const char* seed_file = "seed001_micropitting.json";
 
-app::MicropittingCase seed_case(const CheckContext& ctx) {
+micropitting::MicropittingCase seed_case(const CheckContext& ctx) {
   const auto json = model::read_json_file(ctx.case_path(seed_file));
   model::ObjectReader root(json, "");
   root.string("kind");
   root.optional_string("description");
   const auto gear_case = model::read_gear_case(root);
-  auto mc = app::read_micropitting(root, gear_case, "micropitting_iso");
+  auto mc = micropitting::read_micropitting(root, gear_case, "micropitting_iso");
   root.finish();
   return mc;
 }

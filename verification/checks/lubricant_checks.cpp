@@ -1,7 +1,7 @@
 // The lubricant catalogue (solvers/lubricant/catalogue.h) against published data and the
 // independent ISO/TR 15144-1 reference: ASTM D341 through two temperatures of real oils
 // against their third, and the pressure–viscosity coefficient against the seed 001 value and
-// reference/closed_form/iso15144_micropitting (a separate implementation of the TR); the
+// solvers/micropitting/iso15144_micropitting (a separate implementation of the TR); the
 // viscosity index (ASTM D2270 / ISO 2909) and its inverse against the standard's worked examples.
 #include <algorithm>
 #include <array>
@@ -14,7 +14,7 @@
 #include <fmt/format.h>
 
 #include "check_registry.h"
-#include "closed_form/iso15144_micropitting.h"
+#include "micropitting/iso15144_micropitting.h"
 #include "lubricant/catalogue.h"
 #include "lubricant/viscosity_index.h"
 #include "lubricant/viscosity_temperature.h"
@@ -25,7 +25,7 @@ namespace {
 using lubricant::BaseOil;
 using lubricant::Catalogue;
 using lubricant::celsius_zero;
-namespace iso = reference::iso15144;
+namespace iso = micropitting::iso15144;
 
 const char* section = "Lubricant catalogue";
 const char* solver = "lubricant catalogue (solvers/lubricant)";
@@ -194,7 +194,7 @@ double reference_alpha(const std::string& name, iso::OilBase base, double theta)
 void register_alpha_reference(const char* id, const std::string& name, iso::OilBase base) {
   Registry::instance().add(CheckSpec{
       .id = id, .section = section, .solver = solver,
-      .reference = "reference/closed_form/iso15144_micropitting (ISO/TR 15144-1 (8)–(11), coded independently)",
+      .reference = "solvers/micropitting/iso15144_micropitting (ISO/TR 15144-1 (8)–(11), coded independently)",
       .quantity = fmt::format("α of '{}' at 70 °C", name), .unit = "1/GPa", .tolerance = {0.0, 1e-5},
       .justification = "the same formulas; the two differ only in the Walther line's kelvin offset (273 vs 273.15), "
                        "which moves η38 by ~1e-5 relative and α (∝ η38^0.05…0.16) by ~1e-6",

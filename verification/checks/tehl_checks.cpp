@@ -13,7 +13,7 @@
 #include "model/json_reader.h"
 #include "support/convergence.h"
 #include "support/thermal_fixtures.h"
-#include "tehl_micropitting.h"
+#include "micropitting/tehl_micropitting.h"
 
 namespace gearbench::verification {
 namespace {
@@ -186,7 +186,7 @@ const RegisterCheck gupta(CheckSpec{
 // ---- seed 001 ---------------------------------------------------------------------------
 struct Seed001 {
   model::ThermalPathCase thermal;
-  app::MicropittingCase micropitting;
+  micropitting::MicropittingCase micropitting;
 };
 
 Seed001 seed001(const CheckContext& ctx) {
@@ -195,7 +195,7 @@ Seed001 seed001(const CheckContext& ctx) {
   Seed001 s;
   s.thermal = model::read_thermal_path_case(root);
   const auto& t = s.thermal;
-  s.micropitting = app::read_micropitting(root, model::GearCase{t.gear_pair, t.materials, t.operating, std::nullopt},
+  s.micropitting = micropitting::read_micropitting(root, model::GearCase{t.gear_pair, t.materials, t.operating, std::nullopt},
                                           "tehl_path");
   return s;
 }
@@ -203,7 +203,7 @@ Seed001 seed001(const CheckContext& ctx) {
 /// The case as it is in cases/ (default grids), with its ISO/TR 15144-1 comparison, run once.
 struct SeedRun {
   ThermalPathResult path;
-  app::TehlMicropitting micropitting;
+  micropitting::TehlMicropitting micropitting;
 };
 
 const SeedRun& seed_run_full(const CheckContext& ctx) {
@@ -217,7 +217,7 @@ const SeedRun& seed_run_full(const CheckContext& ctx) {
     const ThermalMeshPath path(g, c.operating, c.materials, rheology, c.solids, c.load_factors, c.load_sharing, {});
     SeedRun run;
     run.path = path.run();
-    run.micropitting = app::compare_with_iso(run.path, c, s.micropitting, {});
+    run.micropitting = micropitting::compare_with_iso(run.path, c, s.micropitting, {});
     it = cache.emplace(ctx.cases_dir, std::move(run)).first;
   }
   return it->second;
@@ -259,7 +259,7 @@ const RegisterCheck no_jump_at_C(CheckSpec{
 const RegisterCheck below_iso(CheckSpec{
     .id = "seed001.tehl.film_below_iso", .section = seed_section, .solver = "ehl.thermal_mesh_path",
     .reference = "seed 001 fig. 2 (thermal EHL h_min below the ISO/TR 15144-1 film at every point) with "
-                 "reference/closed_form/iso15144_micropitting",
+                 "solvers/micropitting/iso15144_micropitting",
     .quantity = "points of A … E where the thermal EHL h_min is not below the ISO film h_Y", .unit = "-",
     .tolerance = {0.0, 0},
     .justification = "the seed's claim holds at every point or it does not",

@@ -1,7 +1,7 @@
 // ISO/TR 15144-1 method B (see the header for the sources and what is unconfirmed).
 // Formula numbers "(n)" are those of ISO/TR 15144-1:2014 as cited by the public port named in
 // the header; the TR's mixed units are converted at each formula and said so.
-#include "closed_form/iso15144_micropitting.h"
+#include "micropitting/iso15144_micropitting.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 
 #include "model/errors.h"
 
-namespace gearbench::reference::iso15144 {
+namespace gearbench::micropitting::iso15144 {
 namespace {
 
 constexpr double pi = std::numbers::pi;
@@ -379,4 +379,4 @@ Assessment assess(const Inputs& gear, const Inputs& test, double material_factor
   return a;
 }
 
-}  // namespace gearbench::reference::iso15144
+}  // namespace gearbench::micropitting::iso15144

@@ -1,14 +1,14 @@
 // The "micropitting" case section (key list in the header).
-#include "iso15144_section.h"
+#include "micropitting/iso15144_case.h"
 
 #include <numbers>
 
 #include "model/errors.h"
 
-namespace gearbench::app {
+namespace gearbench::micropitting {
 namespace {
 
-namespace iso = reference::iso15144;
+namespace iso = iso15144;
 using model::Range;
 
 iso::LubricationMethod read_method(model::ObjectReader& s) {
@@ -106,4 +106,4 @@ MicropittingCase read_micropitting(model::ObjectReader& root, const model::GearC
   return mc;
 }
 
-}  // namespace gearbench::app
+}  // namespace gearbench::micropitting

@@ -21,15 +21,15 @@
 // The test gear runs the same oil, materials and solids as the gear, with K factors of 1.
 #include <string>
 
-#include "closed_form/iso15144_micropitting.h"
+#include "micropitting/iso15144_micropitting.h"
 #include "model/case_reader.h"
 #include "model/json_reader.h"
 
-namespace gearbench::app {
+namespace gearbench::micropitting {
 
 struct MicropittingCase {
-  reference::iso15144::Inputs gear;
-  reference::iso15144::Inputs test;
+  micropitting::iso15144::Inputs gear;
+  micropitting::iso15144::Inputs test;
   double material_factor = 1.0;
   int failure_load_stage = 0;
   std::string test_name;
@@ -40,4 +40,4 @@ struct MicropittingCase {
 MicropittingCase read_micropitting(model::ObjectReader& root, const model::GearCase& c,
                                    const std::string& kind);
 
-}  // namespace gearbench::app
+}  // namespace gearbench::micropitting

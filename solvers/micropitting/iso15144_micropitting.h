@@ -24,7 +24,7 @@
 #include "model/gear_pair.h"
 #include "model/materials.h"
 
-namespace gearbench::reference::iso15144 {
+namespace gearbench::micropitting::iso15144 {
 
 /// Base oil, selecting the pressure–viscosity formula (9)–(11) of the TR.
 enum class OilBase { mineral, polyalphaolefin, polyglycol };
@@ -158,4 +158,4 @@ double flash_temperature(double mu, double p_dyn, double v_g, double v_r1, doubl
 /// h = 1600·ρ_n·G^0.6·U^0.7·W^−0.13·S_GF^0.22 with h in µm, ρ_n in mm (4); here in metres.
 double film_thickness(double rho_n, double G, double U, double W, double S_GF);
 
-}  // namespace gearbench::reference::iso15144
+}  // namespace gearbench::micropitting::iso15144

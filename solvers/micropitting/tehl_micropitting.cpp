@@ -1,10 +1,10 @@
-#include "tehl_micropitting.h"
+#include "micropitting/tehl_micropitting.h"
 
 #include "geometry/gear_pair_geometry.h"
 
-namespace gearbench::app {
+namespace gearbench::micropitting {
 
-namespace iso = reference::iso15144;
+namespace iso = iso15144;
 
 TehlMicropitting compare_with_iso(const ehl::ThermalPathResult& path, const model::ThermalPathCase& c,
                                   const MicropittingCase& m, const ehl::ThermalEhlOptions& options) {
@@ -56,4 +56,4 @@ nlohmann::json micropitting_json(const TehlMicropitting& t) {
                     {"lambda_GFT", t.lambda_GFT}, {"lambda_GFP", t.lambda_GFP}, {"S_lambda", t.S_lambda}}}};
 }
 
-}  // namespace gearbench::app
+}  // namespace gearbench::micropitting

@@ -3,19 +3,19 @@
 // S_λ = λ_GF,min/λ_GFP computed twice, once with the closed-form ISO films and once with the
 // thermal EHL films of the same gear and of the oil's reference test (FZG C-GF at its failure
 // load stage), as seed 001 does: S_λ = (h_min/Ra)/(1.4·h_ref/Ra_ref). Shared by the tehl_path
-// kind and the verification checks (library gearbench_tehl_micropitting).
+// kind and the verification checks.
 #include <array>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "ehl/thermal_mesh_path.h"
-#include "iso15144_section.h"
+#include "micropitting/iso15144_case.h"
 #include "model/case_reader.h"
 
-namespace gearbench::app {
+namespace gearbench::micropitting {
 
 struct TehlMicropitting {
-  reference::iso15144::Assessment iso;     ///< ISO films, λ and S_λ of gear and test
+  micropitting::iso15144::Assessment iso;     ///< ISO films, λ and S_λ of gear and test
   ehl::ThermalPathPoint reference_point;   ///< thermal EHL of the test gear at A
   std::array<double, 7> lambda{};          ///< thermal EHL λ_GF,Y = h_min,Y/Ra, A … E
   double lambda_min = 0.0;
@@ -33,4 +33,4 @@ TehlMicropitting compare_with_iso(const ehl::ThermalPathResult& path, const mode
 
 nlohmann::json micropitting_json(const TehlMicropitting& t);
 
-}  // namespace gearbench::app
+}  // namespace gearbench::micropitting
