@@ -3,10 +3,10 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <iostream>
-#include <tuple>
 
 #include "tooth_sections.h"
 #include "dynamics/herringbone12_dynamics.h"
+#include "dynamics/speed_sweep.h"
 #include "dynamics/spur6_dynamics.h"
 #include "efficiency/dynamic_efficiency.h"
 #include "efficiency_sections.h"
@@ -117,19 +117,13 @@ json stats_json(const dynamics::ResponseStats& s) {
 }
 
 /// "speed_sweep_rpm": {"from", "to", "points"}, pinion speeds, equally spaced.
-struct Sweep {
-  double from = 0, to = 0;
-  int points = 0;
-};
-
-std::optional<Sweep> read_sweep(model::ObjectReader& root) {
+std::optional<dynamics::SpeedSweepSpec> read_sweep(model::ObjectReader& root) {
   if (!root.has("speed_sweep_rpm")) return std::nullopt;
   auto s = root.object("speed_sweep_rpm");
-  Sweep w{s.number("from", Range::positive(1e6), "rpm"), s.number("to", Range::positive(1e6), "rpm"),
-          s.integer("points", 2, 10000)};
+  dynamics::SpeedSweepSpec w{s.number("from", Range::positive(1e6), "rpm"), s.number("to", Range::positive(1e6), "rpm"),
+                             s.integer("points", 2, 10000)};
   s.finish();
-  if (!(w.to > w.from))
-    throw InputError(fmt::format("speed_sweep_rpm.to = {}: must be above speed_sweep_rpm.from = {}", w.to, w.from));
+  w.validate();
   return w;
 }
 
@@ -210,34 +204,15 @@ json herringbone12_result(const dynamics::Herringbone12Dynamics& solver, const d
   };
 }
 
-/// Dynamic factor and rms transmission error against pinion speed; one line per point on
-/// stderr (the CLI's progress, not the solver's).
-template <class Solve>
-json run_sweep(const Sweep& w, model::OperatingPoint operating, Solve solve) {
-  json out = {{"speed_rpm", json::array()}, {"mesh_frequency_Hz", json::array()},
-              {"dynamic_factor", json::array()}, {"transmission_error_rms_m", json::array()},
-              {"skipped", json::array()}};
-  for (int i = 0; i < w.points; ++i) {
-    const double rpm = w.from + (w.to - w.from) * i / (w.points - 1);
-    operating.pinion_speed = rpm * M_PI / 30.0;
-    double mesh_frequency = 0.0, factor = 0.0, te_rms = 0.0;
-    try {
-      std::tie(mesh_frequency, factor, te_rms) = solve(operating);
-    } catch (const InputError& e) {  // a point the model cannot run (e.g. the impact pulse carries the load)
-      std::cerr << fmt::format("gearbench: speed sweep {}/{}: {:.1f} rpm skipped: {}", i + 1, w.points, rpm, e.what())
-                << std::endl;
-      out["skipped"].push_back({{"speed_rpm", rpm}, {"reason", e.what()}});
-      continue;
-    }
-    std::cerr << fmt::format("gearbench: speed sweep {}/{}: {:.1f} rpm, mesh {:.1f} Hz, dynamic factor {:.4f}",
-                             i + 1, w.points, rpm, mesh_frequency, factor) << std::endl;
-    out["speed_rpm"].push_back(rpm);
-    out["mesh_frequency_Hz"].push_back(mesh_frequency);
-    out["dynamic_factor"].push_back(factor);
-    out["transmission_error_rms_m"].push_back(te_rms);
-  }
-  return out;
+/// The speed sweep's figures; its progress goes to stderr, one line per point.
+json sweep_json(const dynamics::SpeedSweepResult& s) {
+  json skipped = json::array();
+  for (const auto& k : s.skipped) skipped.push_back({{"speed_rpm", k.speed_rpm}, {"reason", k.reason}});
+  return {{"speed_rpm", s.speed_rpm}, {"mesh_frequency_Hz", s.mesh_frequency}, {"dynamic_factor", s.dynamic_factor},
+          {"transmission_error_rms_m", s.te_rms}, {"skipped", skipped}};
 }
+
+void print_progress(const std::string& line) { std::cerr << "gearbench: " << line << std::endl; }
 
 /// The optional "dynamic_efficiency" section: the loss options of the efficiency kind
 /// ("friction", "load_sharing", ...) plus "load_levels" and "phases" of the loss curves.
@@ -337,10 +312,10 @@ json run_model(model::ObjectReader& root, const json& case_json, const model::Ge
     result["dynamic_efficiency"] =
         dynamic_efficiency_json(*efficiency_spec, c, r.time, Model::forces(r), r.mesh_frequency);
   if (sweep)
-    result["speed_sweep"] = run_sweep(*sweep, *c.operating, [&](const model::OperatingPoint& op) {
+    result["speed_sweep"] = sweep_json(dynamics::speed_sweep(*sweep, *c.operating, [&](const model::OperatingPoint& op) {
       const auto point = typename Model::Solver(geometry, *c.materials, op, options).solve();
-      return std::tuple{point.mesh_frequency, point.dynamic_factor, Model::te_rms(point)};
-    });
+      return dynamics::SpeedPoint{point.mesh_frequency, point.dynamic_factor, Model::te_rms(point)};
+    }, print_progress));
   return result;
 }
 

@@ -64,7 +64,6 @@ json run_stiffness(const json& case_json) {
                                               {"shear_N_per_m", vector_json(r.shear[g])},
                                               {"axial_N_per_m", vector_json(r.axial[g])},
                                               {"foundation_N_per_m", vector_json(r.foundation[g])}};
-  const double per_face_width = 1.0 / (r.face_width_total * 1e3) * 1e-6;  // N/m → N/(mm·µm)
   json warnings = r.warnings;
   for (const auto& w : iso.warnings) warnings.push_back(w);
   return {
@@ -75,7 +74,7 @@ json run_stiffness(const json& case_json) {
       {"healthy_mesh_stiffness_N_per_m", vector_json(r.healthy_mesh_stiffness)},
       {"mesh_stiffness_min_N_per_m", r.min},
       {"mesh_stiffness_max_N_per_m", r.max},
-      {"mesh_stiffness_mean_N_per_mm_um", r.mean * per_face_width},
+      {"mesh_stiffness_mean_N_per_mm_um", r.mean_per_face_width()},
       {"single_pair_position_mm", vector_json(r.path_position, 1e3)},
       {"single_pair_stiffness_N_per_m", vector_json(r.single_pair_stiffness)},
       {"components", components},
