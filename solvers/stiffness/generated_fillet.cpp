@@ -1,5 +1,6 @@
 #include "generated_fillet.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
@@ -33,6 +34,8 @@ GeneratedFillet::GeneratedFillet(const geometry::GearPairGeometry& pair, int gea
                                      (1.0 / std::cos(alpha_n_) - std::tan(alpha_n_))));
   uc_ = -tip_half_width / cos_beta_;
   vc_ = (g.profile_shift[i] - g.dedendum_coef) * mn + rho_;
+  root_x_ = root_point().x;
+  form_x_ = form_point().x;
 }
 
 // Equation of meshing: the round point P touches the gear when its normal passes through
@@ -40,24 +43,47 @@ GeneratedFillet::GeneratedFillet(const geometry::GearPairGeometry& pair, int gea
 // point is at rack u = −δ on the rolling line, so the contact in the fixed frame (X radial
 // along the tooth-space centre line at φ = 0, Y tangential) is
 //   X = R + v_P,   Y = v_P·N_u/N_v = v_P·cos β·cot t,   φ = (Y − u_P)/R,
-// and the gear-fixed point is that one turned back by φ; the tooth frame turns it by π/z more.
-ProfilePoint GeneratedFillet::at(double t) const {
-  const double u = uc_ - rho_ / cos_beta_ * std::cos(t);
-  const double v = vc_ - rho_ * std::sin(t);
+// and the gear-fixed point is that one turned back by φ; the tooth frame turns it by π/z more:
+//   x = X cos τ − Y sin τ,  h = X sin τ + Y cos τ,  τ = π/z − φ.
+// Differentiating, with τ' = −φ' = −(Y' − u')/R:
+//   dx/dt = X' cos τ − Y' sin τ + h·(Y' − u')/R,
+//   X' = v' = −ρ cos t,  Y' = cos β·(v' cot t − v/sin²t),  u' = (ρ/cos β) sin t.
+GeneratedFillet::Sample GeneratedFillet::sample(double t) const {
+  const double c = std::cos(t), s = std::sin(t);
+  const double u = uc_ - rho_ / cos_beta_ * c;
+  const double v = vc_ - rho_ * s;
   const double X = R_ + v;
-  const double Y = v * cos_beta_ * std::cos(t) / std::sin(t);
-  const double phi = (Y - u) / R_;
-  const double turn = space_angle_ - phi;
-  return {X * std::cos(turn) - Y * std::sin(turn), X * std::sin(turn) + Y * std::cos(turn)};
+  const double Y = v * cos_beta_ * c / s;
+  const double turn = space_angle_ - (Y - u) / R_;
+  const double ct = std::cos(turn), st = std::sin(turn);
+  const double h = X * st + Y * ct;
+  const double dv = -rho_ * c;
+  const double dY = cos_beta_ * (dv * c / s - v / (s * s));
+  const double du = rho_ / cos_beta_ * s;
+  return {X * ct - Y * st, h, dv * ct - dY * st + h * (dY - du) / R_};
 }
 
+ProfilePoint GeneratedFillet::at(double t) const {
+  const Sample p = sample(t);
+  return {p.x, p.h};
+}
+
+// x(t) falls as t rises: Newton's method kept inside the bracket [lo, hi], started from
+// linear interpolation between the form and root points, bisecting whenever a step would
+// leave the bracket (as ToothProfile::involute_alpha_at on the involute).
 double GeneratedFillet::half_thickness(double x) const {
   double lo = alpha_n_, hi = half_pi;  // x(lo) is the largest, x(hi) the smallest
-  for (int iteration = 0; iteration < 200 && hi - lo > 1e-16 * hi; ++iteration) {
-    const double mid = 0.5 * (lo + hi);
-    (at(mid).x > x ? lo : hi) = mid;
+  double t = lo + (hi - lo) * std::clamp((form_x_ - x) / (form_x_ - root_x_), 0.0, 1.0);
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const Sample p = sample(t);
+    const double f = p.x - x;
+    (f > 0.0 ? lo : hi) = t;
+    double next = p.dx_dt < 0.0 ? t - f / p.dx_dt : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - t) <= 1e-15 * t || hi - lo <= 1e-16 * hi) return sample(next).h;
+    t = next;
   }
-  return at(0.5 * (lo + hi)).h;
+  return sample(t).h;
 }
 
 }  // namespace gearbench::stiffness

@@ -34,17 +34,24 @@ class GeneratedFillet {
   /// Where the fillet meets the involute (t = α_n), on the form circle.
   [[nodiscard]] ProfilePoint form_point() const { return at(alpha_n_); }
   /// Half thickness at x between the root and the form point (x grows monotonically as t
-  /// falls from π/2 to α_n; inverted by bisection to the last bit).
+  /// falls from π/2 to α_n; inverted by safeguarded Newton iteration to the last bits).
   [[nodiscard]] double half_thickness(double x) const;
 
  private:
   static constexpr double half_pi = 1.5707963267948966;
+  /// The point of parameter t and dx/dt there.
+  struct Sample {
+    double x, h, dx_dt;
+  };
+  [[nodiscard]] Sample sample(double t) const;
+
   double R_ = 0.0;           ///< reference radius (rolling circle)
   double space_angle_ = 0.0; ///< π/z: the tooth-space centre line's polar angle
   double cos_beta_ = 1.0;
   double alpha_n_ = 0.0;
   double rho_ = 0.0;         ///< ρ_fP [m]
   double uc_ = 0.0, vc_ = 0.0;
+  double root_x_ = 0.0, form_x_ = 0.0;  ///< x at t = π/2 and t = α_n: Newton's first guess
 };
 
 }  // namespace gearbench::stiffness
