@@ -47,9 +47,10 @@ class PairStiffness {
   [[nodiscard]] const geometry::GearPairGeometry& geometry() const { return geometry_; }
   [[nodiscard]] const std::vector<std::string>& warnings() const { return warnings_; }
   [[nodiscard]] const ToothCompliance& tooth(int gear) const { return teeth_.at(static_cast<std::size_t>(gear)); }
+  /// Roll angle of gear `gear`'s flank with the pair in contact at s.
+  [[nodiscard]] double roll_angle(int gear, double s) const;
 
  private:
-  [[nodiscard]] double roll_angle(int gear, double s) const;
 
   const geometry::GearPairGeometry& geometry_;
   std::vector<ToothCompliance> teeth_;

@@ -135,17 +135,26 @@ bool ToothCompliance::crack_active(double roll_angle) const {
   return crack_->type == Crack::Type::root || roll_angle > profile_.reference_roll_angle();
 }
 
-ComplianceComponents ToothCompliance::at(double roll_angle, CrackMode mode) const {
-  const FlankPoint load = profile_.involute_point(roll_angle);
-  const bool cracked = crack_ && (mode == CrackMode::active ||
-                                  (mode == CrackMode::automatic && crack_active(roll_angle)));
-  const Moments m = moments_to(cracked ? cracked_ : healthy_, load.x, cracked);
+ComplianceComponents ToothCompliance::components(const FlankPoint& load, double x_end, bool cracked) const {
+  const Moments m = moments_to(cracked ? cracked_ : healthy_, x_end, cracked);
   const double c = std::cos(load.alpha);
   const double s = std::sin(load.alpha);
   const double K = c * (load.x - profile_.beam_start()) - s * load.h;
   return {K * K * m.J0 - 2.0 * K * c * m.J1 + c * c * m.J2,
           shear_factor * c * c * m.JA / G_,
           s * s * m.JA / E_};
+}
+
+ComplianceComponents ToothCompliance::at(double roll_angle, CrackMode mode) const {
+  const FlankPoint load = profile_.involute_point(roll_angle);
+  const bool cracked = crack_ && (mode == CrackMode::active ||
+                                  (mode == CrackMode::automatic && crack_active(roll_angle)));
+  return components(load, load.x, cracked);
+}
+
+ComplianceComponents ToothCompliance::centre_line_point(double roll_angle) const {
+  const FlankPoint load = profile_.involute_point(roll_angle);
+  return components(load, load.x - load.h * std::tan(load.alpha), false);
 }
 
 }  // namespace gearbench::stiffness

@@ -43,6 +43,12 @@ class ToothCompliance {
   /// crack switch on inside it).
   enum class CrackMode { automatic, healthy, active, inactive };
   [[nodiscard]] ComplianceComponents at(double roll_angle, CrackMode mode = CrackMode::automatic) const;
+  /// The healthy beam's displacement, along the load line, of the point Q where the load line
+  /// crosses the centre line (x_Q = x_1 − h_1·tan α_1), per unit load: the same integrals
+  /// over [x_0, x_Q] only. Below Q a unit force at Q on the load line has the load's moment,
+  /// shear and normal force on every section, above it none (Castigliano). It is what the FE
+  /// reference probes (docs/fe-tooth-model.md), so it compares with it like for like.
+  [[nodiscard]] ComplianceComponents centre_line_point(double roll_angle) const;
 
   [[nodiscard]] const ToothProfile& profile() const { return profile_; }
   /// Crack tip half-thickness h_c (negative past the centre line), if cracked.
@@ -64,6 +70,8 @@ class ToothCompliance {
   [[nodiscard]] Table build_table(bool cracked) const;
   [[nodiscard]] Moments moments_to(const Table& table, double x1, bool cracked) const;
   [[nodiscard]] bool crack_active(double roll_angle) const;
+  /// The three compliances of a load at `load`, integrated from x_0 to x_end.
+  [[nodiscard]] ComplianceComponents components(const FlankPoint& load, double x_end, bool cracked) const;
 
   ToothProfile profile_;
   double E_ = 0.0, G_ = 0.0, width_ = 0.0;
