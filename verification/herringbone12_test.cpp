@@ -62,9 +62,7 @@ TEST(Herringbone12, RejectsBadInputNamingTheKey) {
   EXPECT_NE(error(herringbone, [](auto& o) { o.mesh.friction_coefficient = 0.9; }).find("friction.mu = 0.9"),
             std::string::npos);
   // A helical pair that is not a herringbone pair.
-  auto helical = seed000_pair();
-  helical.herringbone.reset();
-  const geometry::GearPairGeometry single(helical);
+  const geometry::GearPairGeometry single(seed000_pair().one_mesh());
   EXPECT_NE(error(single, [](auto&) {}).find("gear_pair.herringbone: missing"), std::string::npos);
 }
 

@@ -236,9 +236,7 @@ std::optional<DynamicEfficiencySpec> read_dynamic_efficiency(model::ObjectReader
 json dynamic_efficiency_json(const DynamicEfficiencySpec& spec, const model::GearCase& c,
                              const std::vector<double>& time, const std::vector<std::vector<double>>& forces,
                              double mesh_frequency) {
-  model::GearPair mesh = c.gear_pair;
-  mesh.herringbone.reset();
-  const geometry::GearPairGeometry mesh_geometry(mesh);
+  const geometry::GearPairGeometry mesh_geometry(c.gear_pair.one_mesh());
   const auto r = efficiency::dynamic_efficiency(mesh_geometry, *c.operating, spec.loss, {c.materials, c.lubricant},
                                                 time, forces, mesh_frequency, spec.curves);
   return {{"mean", r.mean}, {"static_mean", r.static_mean}, {"efficiency", r.efficiency},
@@ -270,7 +268,7 @@ struct Herringbone12Model {
         "mesh_in_impact: the eq. 6 pulse compresses the mesh by {:.3g} times the loaded deflection that the entering "
         "tooth's approach supplies (parameters.impact.compression_ratio; eq. 6 holds where it is <= 1, here below about "
         "{:.0f} rpm at this torque), so it overstates the dynamic factor; it is off by default",
-        p.impact_compression_ratio, p.omega_p * 30.0 / M_PI / p.impact_compression_ratio)});
+        p.impact_compression_ratio, p.impact_premise_speed() * 30.0 / M_PI)});
   }
   static std::vector<std::vector<double>> forces(const dynamics::Herringbone12Result& r) {
     return {r.mesh_force[0], r.mesh_force[1]};

@@ -61,6 +61,9 @@ struct Herringbone12Parameters {
   double impact_velocity = 0, impact_force = 0, impact_duration = 0;  ///< eq. 6 pulse
   double impact_approach_time = 0;      ///< Δt = 2δ̄/v_s: the corner's approach from first contact to A [s]
   double impact_compression_ratio = 0;  ///< r = F_s·q_s/δ̄: the pulse's compression over the approach's
+  /// The pinion speed [rad/s] below which the eq. 6 pulse keeps to its premise (r ≤ 1) at this
+  /// load: r ∝ Ω at a fixed loaded deflection δ̄ (docs/dynamics-model.md, "Mesh-in impact").
+  [[nodiscard]] double impact_premise_speed() const { return omega_p / impact_compression_ratio; }
   double mean_impact_force = 0;              ///< F̄_s = (2/π)·F_s·τ/T [N]
   double period = 0;                         ///< T_mesh [s]
   std::array<double, 2> clock_offset{};      ///< half h's mesh clock is t + clock_offset[h]

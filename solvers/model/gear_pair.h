@@ -27,6 +27,14 @@ struct GearPair {
   std::optional<double> center_distance;             ///< a [m]; else from the shifts
   std::optional<std::array<double, 2>> tip_diameter; ///< d_a [m]; else d + 2 m_n (h_a* + x)
   std::optional<Herringbone> herringbone;
+
+  /// The pair that one mesh of this pair forms: the pair itself, or one helical half of a
+  /// herringbone pair (whose helix angle and face width are already those of a half).
+  [[nodiscard]] GearPair one_mesh() const {
+    GearPair mesh = *this;
+    mesh.herringbone.reset();
+    return mesh;
+  }
 };
 
 }  // namespace gearbench::model

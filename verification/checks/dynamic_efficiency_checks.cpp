@@ -29,9 +29,7 @@ efficiency::DynamicEfficiencyResult seed000_dynamic_efficiency(const CheckContex
   loss.boundary_friction = 0.1;
   loss.rolling_loss_constant = 0.0;
   loss.positions = 100;
-  model::GearPair half = c.gear_pair;
-  half.herringbone.reset();
-  const geometry::GearPairGeometry half_geometry(half);
+  const geometry::GearPairGeometry half_geometry(c.gear_pair.one_mesh());
   auto e = efficiency::dynamic_efficiency(half_geometry, *c.operating, loss, {c.materials, c.lubricant}, r.time,
                                           {r.mesh_force[0], r.mesh_force[1]}, r.mesh_frequency);
   return cache.emplace(ctx.cases_dir, std::move(e)).first->second;
