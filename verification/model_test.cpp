@@ -1,11 +1,14 @@
 // Unit tests of the validating JSON reader and the case sections (solvers/model).
 #include <fmt/format.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_sf_log.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "model/case_reader.h"
 #include "model/errors.h"
+#include "model/gsl_status.h"
 #include "support/test_support.h"
 
 namespace gearbench::model {
@@ -18,6 +21,22 @@ using testing_support::input_error_of;
 json spur_pair() {
   return json::parse(R"({"teeth": [22, 32], "normal_module_mm": 2.0,
                          "normal_pressure_angle_deg": 25.0, "face_width_mm": 20.0})");
+}
+
+// GSL's failures come back as statuses and errors, never through its default handler, which
+// would abort() the process: ln(−1) is a domain error.
+TEST(GslStatus, FailuresAreStatusesAndErrorsNotAborts) {
+  gsl_use_status_codes();
+  gsl_sf_result r;
+  const int status = gsl_sf_log_e(-1.0, &r);
+  EXPECT_EQ(status, GSL_EDOM);
+  try {
+    gsl_check(status, "log");
+    ADD_FAILURE() << "no error for GSL_EDOM";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), std::string("GSL log: ") + gsl_strerror(GSL_EDOM));
+  }
+  EXPECT_NO_THROW(gsl_check(GSL_SUCCESS, "log"));
 }
 
 TEST(ObjectReader, ReadsUnitsIntoSI) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "involute_closed_form.h"
+#include "model/gsl_status.h"
 
 namespace gearbench::reference {
 
@@ -87,7 +88,7 @@ double iso14179_mean_coefficient(const model::GearPair& pair, const model::Opera
 }
 
 double spur_loss_factor_quadrature(const model::GearPair& pair) {
-  gsl_set_error_handler_off();
+  model::gsl_use_status_codes();
   Integrand data{path_of(pair)};
   const Path& p = data.p;
   std::vector<double> points{p.A, p.E - p.pbt, p.C, p.A + p.pbt, p.E};
@@ -96,10 +97,8 @@ double spur_loss_factor_quadrature(const model::GearPair& pair) {
   std::unique_ptr<gsl_integration_workspace, decltype(&gsl_integration_workspace_free)> w(
       gsl_integration_workspace_alloc(200), &gsl_integration_workspace_free);
   double result = 0.0, error = 0.0;
-  if (const int status = gsl_integration_qagp(&f, points.data(), points.size(), 0.0, 1e-12, 200, w.get(),
-                                              &result, &error);
-      status != GSL_SUCCESS)
-    throw std::runtime_error(std::string("GSL qagp (loss integral): ") + gsl_strerror(status));
+  model::gsl_check(gsl_integration_qagp(&f, points.data(), points.size(), 0.0, 1e-12, 200, w.get(), &result, &error),
+                   "qagp (loss integral)");
   return (p.u + 1.0) / (p.u * p.rb1 * p.pbt) * result;
 }
 

@@ -10,18 +10,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "model/gsl_status.h"
+
 namespace gearbench::reference {
 
 namespace {
 
 using std::numbers::pi;
 
-// ---- GSL helpers: every non-success status becomes a std::runtime_error ---------------
-
-void check(int status, const char* what) {
-  if (status != GSL_SUCCESS)
-    throw std::runtime_error(std::string("GSL ") + what + ": " + gsl_strerror(status));
-}
+// ---- GSL helpers: every non-success status becomes a std::runtime_error (model::gsl_check) ---
 
 constexpr std::size_t quadrature_limit = 1000;
 
@@ -35,7 +32,7 @@ double integrate_to_infinity(F f, double a, double epsabs, double epsrel) {
   if (!ws) throw std::runtime_error("GSL: cannot allocate an integration workspace");
   double result = 0.0;
   double abserr = 0.0;
-  check(gsl_integration_qagiu(&g, a, epsabs, epsrel, quadrature_limit, ws.get(), &result,
+  model::gsl_check(gsl_integration_qagiu(&g, a, epsabs, epsrel, quadrature_limit, ws.get(), &result,
                               &abserr),
         "qagiu");
   return result;
@@ -48,9 +45,9 @@ double find_root(F f, double lo, double hi, double tol) {
   std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
       gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
   if (!solver) throw std::runtime_error("GSL: cannot allocate a Brent solver");
-  check(gsl_root_fsolver_set(solver.get(), &g, lo, hi), "Brent bracket");
+  model::gsl_check(gsl_root_fsolver_set(solver.get(), &g, lo, hi), "Brent bracket");
   for (int iteration = 0; iteration < 200; ++iteration) {
-    check(gsl_root_fsolver_iterate(solver.get()), "Brent iteration");
+    model::gsl_check(gsl_root_fsolver_iterate(solver.get()), "Brent iteration");
     lo = gsl_root_fsolver_x_lower(solver.get());
     hi = gsl_root_fsolver_x_upper(solver.get());
     if (gsl_root_test_interval(lo, hi, tol, 0.0) == GSL_SUCCESS)
@@ -271,7 +268,7 @@ double martin_film_at_peak(const LineContact& c) {
 // Reynolds outlet ξ_o > 0: P(ξ_o) = 0 with P'(ξ_o) = 0, i.e. H* = 1 + ξ_o². P(ξ_o; 1 + ξ_o²)
 // is positive as ξ_o → 0 and negative at ξ_o = 1, so Brent brackets the root in [0.1, 1].
 RigidIsoviscousSolution rigid_isoviscous_reynolds() {
-  gsl_set_error_handler_off();
+  model::gsl_use_status_codes();
   const double outlet = find_root(
       [](double xi) { return scaled_pressure(xi, 1.0 + xi * xi); }, 0.1, 1.0, root_tolerance);
   const double film_at_peak = 1.0 + outlet * outlet;
@@ -285,7 +282,7 @@ RigidIsoviscousSolution rigid_isoviscous_reynolds() {
 // pressure is then antisymmetric; the half-Sommerfeld film keeps it up to its zero
 // crossing (found by Brent in [−0.5, 0.5]) and discards the negative part beyond.
 RigidIsoviscousSolution rigid_isoviscous_half_sommerfeld() {
-  gsl_set_error_handler_off();
+  model::gsl_use_status_codes();
   const double film_at_peak =
       find_root([](double film) { return pressure_at_infinity(film); }, 1.0, 2.0, root_tolerance);
   const double outlet = find_root(

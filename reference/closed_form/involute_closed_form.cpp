@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "model/gsl_status.h"
+
 namespace gearbench::reference {
 
 namespace {
@@ -24,18 +26,16 @@ double inv_residual(double alpha, void* params) {
 
 // Solves inv α = value on (0, 80°) with gsl_root_fsolver_brent to 1e-15 rad.
 double solve_involute(double value) {
-  gsl_set_error_handler_off();
+  model::gsl_use_status_codes();
   InvTarget target{value};
   gsl_function f{&inv_residual, &target};
   std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
       gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
   double lo = 1e-9;
   double hi = 80.0 * M_PI / 180.0;
-  if (int status = gsl_root_fsolver_set(solver.get(), &f, lo, hi); status != GSL_SUCCESS)
-    throw std::runtime_error(std::string("GSL root bracket: ") + gsl_strerror(status));
+  model::gsl_check(gsl_root_fsolver_set(solver.get(), &f, lo, hi), "root bracket");
   for (int iteration = 0; iteration < 200; ++iteration) {
-    if (int status = gsl_root_fsolver_iterate(solver.get()); status != GSL_SUCCESS)
-      throw std::runtime_error(std::string("GSL root iteration: ") + gsl_strerror(status));
+    model::gsl_check(gsl_root_fsolver_iterate(solver.get()), "root iteration");
     lo = gsl_root_fsolver_x_lower(solver.get());
     hi = gsl_root_fsolver_x_upper(solver.get());
     if (gsl_root_test_interval(lo, hi, 1e-15, 0.0) == GSL_SUCCESS)

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "closed_form/involute_closed_form.h"
+#include "model/gsl_status.h"
 
 namespace gearbench::reference {
 
@@ -27,7 +28,7 @@ double wrap(double angle) { return std::remainder(angle, 2.0 * pi); }
 
 /// Brent (GSL) on [lo, hi] where f changes sign, to an interval of 1e-14 of the bracket.
 double brent(const std::function<double(double)>& f, double lo, double hi) {
-  gsl_set_error_handler_off();
+  model::gsl_use_status_codes();
   gsl_function g{[](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); },
                  const_cast<std::function<double(double)>*>(&f)};
   const std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "closed_form/involute_closed_form.h"
+#include "model/gsl_status.h"
 #include "quadrature/trochoid_fillet.h"
 
 namespace gearbench::reference {
@@ -24,9 +25,6 @@ constexpr double root_tolerance = 1e-14;        // absolute, in the root's own u
 constexpr std::size_t quadrature_limit = 1000;  // subintervals per qagp call
 constexpr double shear_factor = 1.2;            // spec, "Energies and compliances"
 
-void throw_on_gsl_error(int status, const std::string& what) {
-  if (status != GSL_SUCCESS) throw std::runtime_error(what + ": " + gsl_strerror(status));
-}
 
 // ------------------------------------------------------------------ GSL wrappers
 
@@ -38,9 +36,9 @@ double brent_root(Function f, double lo, double hi) {
   gsl_function gf{[](double t, void* p) { return (*static_cast<Function*>(p))(t); }, &f};
   std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
       gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
-  throw_on_gsl_error(gsl_root_fsolver_set(solver.get(), &gf, lo, hi), "GSL Brent bracket");
+  model::gsl_check(gsl_root_fsolver_set(solver.get(), &gf, lo, hi), "Brent bracket");
   for (int iteration = 0; iteration < 200; ++iteration) {
-    throw_on_gsl_error(gsl_root_fsolver_iterate(solver.get()), "GSL Brent iteration");
+    model::gsl_check(gsl_root_fsolver_iterate(solver.get()), "Brent iteration");
     lo = gsl_root_fsolver_x_lower(solver.get());
     hi = gsl_root_fsolver_x_upper(solver.get());
     if (gsl_root_test_interval(lo, hi, root_tolerance, 0.0) == GSL_SUCCESS)
@@ -57,10 +55,10 @@ double integrate_with_breaks(Function& f, std::vector<double> pts) {
   std::unique_ptr<gsl_integration_workspace, decltype(&gsl_integration_workspace_free)> work(
       gsl_integration_workspace_alloc(quadrature_limit), &gsl_integration_workspace_free);
   double result = 0.0, abserr = 0.0;
-  throw_on_gsl_error(
+  model::gsl_check(
       gsl_integration_qagp(&gf, pts.data(), pts.size(), 0.0, quadrature_relative_error,
                            quadrature_limit, work.get(), &result, &abserr),
-      "GSL qagp");
+      "qagp");
   return result;
 }
 
@@ -360,7 +358,7 @@ QuadCompliance energy_compliance_quadrature(const model::GearPair& pair,
                                             const model::Material& material, int gear, double s,
                                             QuadBeamStart start, const QuadCrack& crack,
                                             double face_width) {
-  gsl_set_error_handler_off();
+  model::gsl_use_status_codes();
   check_arguments(pair, material, gear, face_width);
   const Tooth tooth = tooth_of(pair, gear);
   const double psi = roll_angle(pair, tooth, gear, s);
@@ -391,7 +389,7 @@ QuadCompliance energy_compliance_quadrature(const model::GearPair& pair,
 
 QuadLoadGeometry load_geometry_quadrature(const model::GearPair& pair, int gear, double s,
                                           QuadBeamStart start) {
-  gsl_set_error_handler_off();
+  model::gsl_use_status_codes();
   const Tooth tooth = tooth_of(pair, gear);
   const double alpha1 = roll_angle(pair, tooth, gear, s) - tooth.alpha2;
   const Beam beam = beam_of(pair, gear, start, alpha1);
@@ -409,7 +407,7 @@ double hertz_compliance_quadrature(const model::Material& m1, const model::Mater
 }
 
 QuadContactPath contact_path_quadrature(const model::GearPair& pair) {
-  gsl_set_error_handler_off();
+  model::gsl_use_status_codes();
   const InvoluteClosedForm closed = involute_closed_form(pair);
   QuadContactPath path;
   path.line_of_action_length = closed.line_of_action_length;

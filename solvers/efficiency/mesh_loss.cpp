@@ -6,10 +6,12 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <numeric>
+#include <stdexcept>
 
 #include "ehl_friction.h"
 #include "film_thickness.h"
 #include "model/errors.h"
+#include "model/gsl_status.h"
 #include "stiffness/pair_stiffness.h"
 
 namespace gearbench::efficiency {
@@ -203,13 +205,16 @@ ContactLoss MeshLoss::spur_mean() const {
     if (phase > p.A && phase < p.A + pb) breaks.push_back(phase);
   }
   std::sort(breaks.begin(), breaks.end());
+  model::gsl_use_status_codes();
   const std::unique_ptr<gsl_integration_glfixed_table, decltype(&gsl_integration_glfixed_table_free)> table(
       gsl_integration_glfixed_table_alloc(10), &gsl_integration_glfixed_table_free);
+  if (!table) throw std::runtime_error("GSL Gauss–Legendre table allocation failed");
   ContactLoss integral;
   for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
     for (std::size_t i = 0; i < 10; ++i) {
       double x = 0.0, w = 0.0;
-      gsl_integration_glfixed_point(breaks[k], breaks[k + 1], i, &x, &w, table.get());
+      model::gsl_check(gsl_integration_glfixed_point(breaks[k], breaks[k + 1], i, &x, &w, table.get()),
+                       "Gauss–Legendre point");
       const ContactLoss l = loss_at(x);
       integral.sliding += w * l.sliding;
       integral.rolling += w * l.rolling;

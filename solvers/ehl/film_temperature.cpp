@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "model/errors.h"
+#include "model/gsl_status.h"
 
 namespace gearbench::ehl {
 
@@ -38,14 +39,15 @@ double integrate_graded(const std::vector<double>& y, const std::vector<double>&
 /// Solves the tridiagonal system (sub, diag, sup)·x = rhs with GSL (gsl_linalg_solve_tridiag).
 std::vector<double> solve_tridiagonal(std::vector<double> sub, std::vector<double> diag, std::vector<double> sup,
                                       std::vector<double> rhs) {
+  model::gsl_use_status_codes();
   std::vector<double> x(diag.size());
   gsl_vector_view d = gsl_vector_view_array(diag.data(), diag.size());
   gsl_vector_view e = gsl_vector_view_array(sup.data(), sup.size());
   gsl_vector_view f = gsl_vector_view_array(sub.data(), sub.size());
   gsl_vector_view b = gsl_vector_view_array(rhs.data(), rhs.size());
   gsl_vector_view out = gsl_vector_view_array(x.data(), x.size());
-  if (gsl_linalg_solve_tridiag(&d.vector, &e.vector, &f.vector, &b.vector, &out.vector) != 0)
-    throw std::runtime_error("film temperature: singular column system");
+  model::gsl_check(gsl_linalg_solve_tridiag(&d.vector, &e.vector, &f.vector, &b.vector, &out.vector),
+                   "tridiagonal solve of a film-temperature column");
   return x;
 }
 }  // namespace

@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "model/gsl_status.h"
+
 namespace gearbench::ehl {
 
 LineRelaxation::LineRelaxation(std::size_t nodes, int band)
@@ -78,8 +80,9 @@ std::vector<double> LineRelaxation::change(const ReynoldsCoefficients& c, const 
     }
     gsl_vector_set(x_, col, held[j] ? 0.0 : residual[j] * (jacobi[j] ? omega_jacobi : omega_gauss_seidel));
   }
-  gsl_linalg_LU_band_decomp(m, b, b, band_matrix_, pivots_);
-  gsl_linalg_LU_band_svx(b, b, band_matrix_, pivots_, x_);
+  model::gsl_use_status_codes();
+  model::gsl_check(gsl_linalg_LU_band_decomp(m, b, b, band_matrix_, pivots_), "band LU of the EHL line step");
+  model::gsl_check(gsl_linalg_LU_band_svx(b, b, band_matrix_, pivots_, x_), "band solve of the EHL line step");
 
   std::vector<double> dP(n_, 0.0);
   for (long j = 1; j <= m; ++j) {

@@ -2,13 +2,15 @@
 
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <fmt/format.h>
 #include <gsl/gsl_integration.h>
+#include <limits>
 #include <memory>
+#include <stdexcept>
 
 #include "geometry/load_sharing.h"
 #include "model/errors.h"
+#include "model/gsl_status.h"
 #include "stiffness/pair_stiffness.h"
 
 namespace gearbench::ehl {
@@ -193,9 +195,11 @@ MeshPeriodOilFilmResult MeshPeriodOilFilm::solve() const {
   const double beta_b = g.base_helix_angle();
   const double normal_force = operating_.pinion_torque / (g.radii(0).base * std::cos(beta_b));
   const double pb = g.base_pitch_transverse();
+  model::gsl_use_status_codes();
   const std::unique_ptr<gsl_integration_glfixed_table, decltype(&gsl_integration_glfixed_table_free)> table(
       gsl_integration_glfixed_table_alloc(static_cast<std::size_t>(options_.points_per_piece)),
       &gsl_integration_glfixed_table_free);
+  if (!table) throw std::runtime_error("GSL Gauss–Legendre table allocation failed");
 
   MeshPeriodOilFilmResult out;
   out.period = pair_.mesh_period(operating_.pinion_speed);
@@ -218,7 +222,8 @@ MeshPeriodOilFilmResult MeshPeriodOilFilm::solve() const {
       } else {
         for (std::size_t j = 0; j < table->n; ++j) {
           double s = 0.0, weight = 0.0;
-          gsl_integration_glfixed_point(p.s_begin, p.s_end, j, &s, &weight, table.get());
+          model::gsl_check(gsl_integration_glfixed_point(p.s_begin, p.s_end, j, &s, &weight, table.get()),
+                           "Gauss–Legendre point");
           const auto f = film_at(s, m.load_per_length);
           stiffness += weight * f.stiffness_per_length / std::sin(beta_b);
           m.h_central_min = std::min(m.h_central_min, f.h_central);
