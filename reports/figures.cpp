@@ -42,7 +42,7 @@ bool render(const Figure& figure, const std::string& terminal, const std::string
        << "set xlabel " << quoted(figure.xlabel) << " noenhanced\n"
        << "set ylabel " << quoted(figure.ylabel) << " noenhanced\n"
        << "set grid\nset key below noenhanced\n"
-       << (figure.log_y ? "set logscale y\n" : "");
+       << (figure.log_x ? "set logscale x\n" : "") << (figure.log_y ? "set logscale y\n" : "");
     if (!figure.colour_label.empty())
       gp << "set size ratio -1\nset palette rgbformulae 22,13,-31\nset cblabel " << quoted(figure.colour_label)
          << " noenhanced\n";
@@ -126,7 +126,7 @@ Figure figure_from_json(const nlohmann::json& j) {
   Figure f{.id = j.at("id").get<std::string>(), .section = j.value("section", ""), .title = j.value("title", ""),
            .xlabel = j.value("xlabel", ""), .ylabel = j.value("ylabel", ""), .log_y = j.value("log_y", false),
            .impulses = j.value("impulses", false), .points = j.value("points", false),
-           .colour_label = j.value("colour_label", "")};
+           .colour_label = j.value("colour_label", ""), .log_x = j.value("log_x", false)};
   if (j.contains("xtic_labels")) f.xtic_labels = j["xtic_labels"].get<std::vector<std::string>>();
   // null (a non-finite value in the report) stays non-finite and is skipped when drawn.
   const auto numbers = [](const nlohmann::json& a) {

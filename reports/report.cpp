@@ -227,7 +227,8 @@ json to_json(const Report& report) {
     }
     figures.push_back({{"id", f.id}, {"section", f.section}, {"title", f.title},
                        {"xlabel", f.xlabel}, {"ylabel", f.ylabel}, {"series", series},
-                       {"log_y", f.log_y}, {"impulses", f.impulses}, {"colour_label", f.colour_label},
+                       {"log_x", f.log_x}, {"log_y", f.log_y}, {"impulses", f.impulses}, {"points", f.points},
+                       {"colour_label", f.colour_label},
                        {"file", "figures/" + f.id + ".svg"}, {"data", "figures/" + f.id + ".csv"}});
   }
   json notes = json::array();

@@ -71,6 +71,9 @@ struct Figure {
   /// Non-empty: a colour map — each series' points (x, y) filled by z on a palette with
   /// this label, equal axis scales (e.g. a stress field sampled on a grid).
   std::string colour_label;
+  /// Logarithmic x axis (last, so that positional initialisers of the fields above keep
+  /// their meaning).
+  bool log_x = false;
 };
 
 /// Free text for a section (e.g. what a seed reproduction reached and why it differs).
