@@ -38,7 +38,11 @@ int verify_command(const std::string& tier, const std::string& out_dir, const st
   const verification::CheckContext context{cases_dir};
   auto report = verification::run_verification(
       parsed, context, [](const std::string& line) { std::cerr << line << std::endl; }, only);
-  if (!bench_record.empty()) report.notes.push_back(reports::benchmark_note(model::read_json_file(bench_record)));
+  if (!bench_record.empty()) {
+    const auto record = model::read_json_file(bench_record);
+    report.notes.push_back(reports::benchmark_note(record));
+    for (auto& figure : reports::work_precision_figures(record)) report.figures.push_back(std::move(figure));
+  }
   report.notes.push_back(performance_note(bench_record));
   // The report folder appears whole and its path is printed, or neither: a Ctrl-C before this
   // point leaves nothing; one after it comes when the work is done, and the run finishes.

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <map>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include "model/errors.h"
@@ -49,6 +51,63 @@ Note benchmark_note(const nlohmann::json& record) {
 }
 
 namespace {
+/// One point of the work–precision study over its repetitions.
+struct WorkPoint {
+  std::vector<double> cpu_ms;
+  double te_error = 0.0;
+  double force_error = 0.0;
+};
+/// model -> method -> tolerance order (rtol exponent or steps a cycle: larger is tighter) -> point.
+using WorkStudy = std::map<std::string, std::map<std::string, std::map<double, WorkPoint>>>;
+
+/// The parts of a run name between '/', without Google Benchmark's settings such as
+/// "iterations:1".
+std::vector<std::string> split_name(const std::string& name) {
+  std::vector<std::string> parts;
+  std::istringstream in(name);
+  for (std::string part; std::getline(in, part, '/');)
+    if (part.find(':') == std::string::npos) parts.push_back(part);
+  return parts;
+}
+
+/// Adds one run of the record to the study if it is a completed work–precision run.
+void add_work_point(WorkStudy& study, const nlohmann::json& run) {
+  if (run.value("run_type", "iteration") != "iteration" || run.value("error_occurred", false) ||
+      !run.contains("te_error") || !run.contains("force_error"))
+    return;
+  const auto parts = split_name(run["name"].get<std::string>());
+  const bool method = parts.size() == 4 && parts[0] == "BM_WorkPrecision";
+  const bool rk4 = parts.size() == 3 && parts[0] == "BM_WorkPrecision_RK4";
+  if (!method && !rk4) return;
+  auto& point = study[parts[1]][method ? parts[2] : "RK4"][std::stod(parts.back())];
+  point.cpu_ms.push_back(run["cpu_time"].get<double>() * 1e3 *
+                         unit_seconds(run["time_unit"].get<std::string>(), "--bench"));
+  point.te_error = run["te_error"].get<double>();
+  point.force_error = run["force_error"].get<double>();
+}
+
+Figure work_precision_figure(const std::string& model, const std::map<std::string, std::map<double, WorkPoint>>& methods,
+                             bool force) {
+  Figure f{.id = fmt::format("work_precision_{}_{}", model, force ? "force" : "te"),
+           .section = "Benchmarks",
+           .title = fmt::format("Work–precision, {}: {} error against CPU time", model,
+                                force ? "mesh-force" : "transmission-error"),
+           .xlabel = "CPU time per run [ms]",
+           .ylabel = force ? "max |F - F_ref| / p2p(F_ref)" : "max |TE - TE_ref| / p2p(TE_ref)",
+           .log_y = true,
+           .points = true,
+           .log_x = true};
+  for (const auto& [method, points] : methods) {
+    Series s{.label = method};
+    for (const auto& [order, p] : points) {
+      s.x.push_back(median(p.cpu_ms));
+      s.y.push_back(force ? p.force_error : p.te_error);
+    }
+    f.series.push_back(std::move(s));
+  }
+  return f;
+}
+
 /// The newest run (in commit order) of `runs` for which `pick` holds.
 template <class Pred>
 std::optional<PerfRun> newest(std::vector<PerfRun> runs, Pred pick) {
@@ -58,6 +117,15 @@ std::optional<PerfRun> newest(std::vector<PerfRun> runs, Pred pick) {
   return std::nullopt;
 }
 }  // namespace
+
+std::vector<Figure> work_precision_figures(const nlohmann::json& record) {
+  WorkStudy study;
+  for (const auto& run : record.value("benchmarks", nlohmann::json::array())) add_work_point(study, run);
+  std::vector<Figure> figures;
+  for (const auto& [model, methods] : study)
+    for (const bool force : {false, true}) figures.push_back(work_precision_figure(model, methods, force));
+  return figures;
+}
 
 Note performance_note(const std::vector<PerfRun>& history, const std::optional<PerfRun>& current,
                       const PerformanceQuery& query, const PerfOptions& options) {

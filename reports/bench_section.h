@@ -15,6 +15,14 @@ namespace gearbench::reports {
 /// Throws InputError when the record is not a `gearbench bench` record.
 Note benchmark_note(const nlohmann::json& record);
 
+/// The work–precision diagrams of the integrator study (benchmarks/dynamics_benchmark.cpp:
+/// BM_WorkPrecision/<model>/<method>/<rtol exponent>, BM_WorkPrecision_RK4/<model>/<steps a
+/// cycle>) for the Benchmarks section: per model a figure of the transmission-error error and
+/// one of the mesh-force error against CPU time per run, log–log, one series per method (RK4
+/// included), its points from loose to tight (median CPU time over repetitions). Runs that
+/// stopped with an error are left out; none when the record holds no such runs.
+std::vector<Figure> work_precision_figures(const nlohmann::json& record);
+
 /// Which record is this commit's and which machine it ran on, for the Performance section.
 struct PerformanceQuery {
   std::string sha;          ///< this build's commit
