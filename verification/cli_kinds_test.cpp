@@ -353,6 +353,20 @@ TEST(Cli, HerringboneDynamicsRunsSweepsAndValidates) {
   }
 }
 
+// Issue 20: the dynamic efficiency's friction law refuses the nominal contact of a 0.04 mm
+// module (Xu–Kahraman, P_h 86 GPa against its [0.001, 10] GPa) before the integration, not
+// after it (33 s once). With a million run-up cycles this test would not finish were the
+// check after the integration again.
+TEST(Cli, DynamicEfficiencyBeyondTheFrictionLawIsRefusedBeforeTheRun) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed000_herringbone_dynamics.json");
+  auto j = json::parse(in);
+  j["gear_pair"]["normal_module_mm"] = 0.04;
+  j["runup_cycles"] = 1000000;
+  const auto o = run_gearbench("run " + write_case("herringbone_beyond_friction_law", j.dump()));
+  expect_one_error_line(o, "error: xu_kahraman.hertz_pressure = 86");
+  EXPECT_NE(o.err.find("allowed range is [0.001, 10] GPa"), std::string::npos) << o.err;
+}
+
 TEST(Cli, EfficiencyRunsAndValidates) {
   std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed004_spur_efficiency.json");
   const auto j = json::parse(in);

@@ -251,6 +251,20 @@ TEST(DynamicEfficiency, ConstantForceReproducesStatic) {
   EXPECT_NEAR(1.0 - alt.mean, 1.25 * (1.0 - same.static_mean), 1e-12);
 }
 
+// The static loss at the nominal force is computed on construction, before any force series
+// exists, so that a caller can construct first and integrate after: a contact beyond the
+// friction law's range is refused there (issue 20: a dynamics run met Xu–Kahraman's refusal
+// of an 87 GPa Hertz pressure only after its integration, 33 s in).
+TEST(DynamicEfficiency, ConstructionRefusesAContactBeyondTheFrictionLaw) {
+  const geometry::GearPairGeometry g(testing_support::spur_pair(22, 32, 0.04, 25.0, 20.0));
+  MeshLossOptions o;
+  o.friction_model = FrictionModel::xu_kahraman;
+  const auto msg = testing_support::input_error_of(
+      [&] { efficiency::DynamicEfficiency(g, operating(1000, 100), o, seed004_media(), 1); });
+  EXPECT_EQ(msg.rfind("xu_kahraman.hertz_pressure = ", 0), 0u) << msg;
+  EXPECT_NE(msg.find("allowed range is [0.001, 10] GPa"), std::string::npos) << msg;
+}
+
 // The force series of the 6-DOF spur dynamics (seed 003 pair) fed to the dynamic efficiency:
 // every instant dissipates, and the dynamic mean lies within 1 % (absolute) of the static one
 // (seed 000 finds 0.3 % lower with its herringbone model).

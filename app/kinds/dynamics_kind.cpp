@@ -233,16 +233,30 @@ std::optional<DynamicEfficiencySpec> read_dynamic_efficiency(model::ObjectReader
 
 /// η_D(t) of the recorded window (seed 000 eq. 12) beside the static efficiency on the same
 /// phase grid. A herringbone pair is passed as one helical half with a force series per half.
-json dynamic_efficiency_json(const DynamicEfficiencySpec& spec, const model::GearCase& c,
-                             const std::vector<double>& time, const std::vector<std::vector<double>>& forces,
-                             double mesh_frequency) {
-  const geometry::GearPairGeometry mesh_geometry(c.gear_pair.one_mesh());
-  const auto r = efficiency::dynamic_efficiency(mesh_geometry, *c.operating, spec.loss, {c.materials, c.lubricant},
-                                                time, forces, mesh_frequency, spec.curves);
-  return {{"mean", r.mean}, {"static_mean", r.static_mean}, {"efficiency", r.efficiency},
-          {"load_levels_N", r.load_levels},
-          {"friction_model", lubricant::friction_model_name(spec.loss.friction_model)}};
-}
+/// Constructed before the integration: the static loss at the nominal force, computed then,
+/// refuses a contact out of the friction law's range (e.g. its Hertz pressure) at once, not
+/// after the run.
+class DynamicEfficiencyRun {
+ public:
+  DynamicEfficiencyRun(const DynamicEfficiencySpec& spec, const model::GearCase& c, std::size_t meshes)
+      : mesh_geometry_(c.gear_pair.one_mesh()),
+        efficiency_(mesh_geometry_, *c.operating, spec.loss, {c.materials, c.lubricant}, meshes, spec.curves),
+        friction_model_(spec.loss.friction_model) {}
+  DynamicEfficiencyRun(const DynamicEfficiencyRun&) = delete;  // efficiency_ refers to mesh_geometry_
+  DynamicEfficiencyRun& operator=(const DynamicEfficiencyRun&) = delete;
+
+  [[nodiscard]] json evaluate(const std::vector<double>& time, const std::vector<std::vector<double>>& forces,
+                              double mesh_frequency) const {
+    const auto r = efficiency_.evaluate(time, forces, mesh_frequency);
+    return {{"mean", r.mean}, {"static_mean", r.static_mean}, {"efficiency", r.efficiency},
+            {"load_levels_N", r.load_levels}, {"friction_model", lubricant::friction_model_name(friction_model_)}};
+  }
+
+ private:
+  geometry::GearPairGeometry mesh_geometry_;
+  efficiency::DynamicEfficiency efficiency_;
+  lubricant::FrictionModel friction_model_;
+};
 
 /// What differs between the two models for run_model: reading, result JSON and the series
 /// that the dynamic efficiency and the speed sweep take.
@@ -251,6 +265,7 @@ struct Spur6Model {
   static constexpr auto read = read_spur6_options;
   static constexpr auto result = spur6_result;
   static json notes(const Solver&) { return json::array(); }
+  static constexpr std::size_t meshes = 1;
   static std::vector<std::vector<double>> forces(const dynamics::Spur6Result& r) { return {r.mesh_force}; }
   static double te_rms(const dynamics::Spur6Result& r) { return r.te.rms; }
   static const dynamics::FrictionLawOptions& law(const dynamics::Spur6Options& o) { return o.friction_law; }
@@ -270,6 +285,7 @@ struct Herringbone12Model {
         "{:.0f} rpm at this torque), so it overstates the dynamic factor; it is off by default",
         p.impact_compression_ratio, p.impact_premise_speed() * 30.0 / M_PI)});
   }
+  static constexpr std::size_t meshes = 2;  ///< the halves
   static std::vector<std::vector<double>> forces(const dynamics::Herringbone12Result& r) {
     return {r.mesh_force[0], r.mesh_force[1]};
   }
@@ -300,15 +316,15 @@ json run_model(model::ObjectReader& root, const json& case_json, const model::Ge
   const auto efficiency_spec = read_dynamic_efficiency(root);
   root.finish();
   const typename Model::Solver solver(geometry, *c.materials, *c.operating, options);
+  std::optional<DynamicEfficiencyRun> efficiency;  // before the integration: it checks the friction law's range
+  if (efficiency_spec) efficiency.emplace(*efficiency_spec, c, Model::meshes);
   const auto r = solver.solve();
   json result = Model::result(solver, r);
   result["notes"] = periodicity_notes(r.periodicity);
   for (const auto& note : Model::notes(solver)) result["notes"].push_back(note);
   result["friction_model"] = lubricant::friction_model_name(Model::law(options).model);
   result["contact_loss"] = contact_json(options.backlash, r);
-  if (efficiency_spec)
-    result["dynamic_efficiency"] =
-        dynamic_efficiency_json(*efficiency_spec, c, r.time, Model::forces(r), r.mesh_frequency);
+  if (efficiency) result["dynamic_efficiency"] = efficiency->evaluate(r.time, Model::forces(r), r.mesh_frequency);
   if (sweep)
     result["speed_sweep"] = sweep_json(dynamics::speed_sweep(*sweep, *c.operating, [&](const model::OperatingPoint& op) {
       const auto point = typename Model::Solver(geometry, *c.materials, op, options).solve();

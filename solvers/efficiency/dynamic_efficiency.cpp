@@ -18,17 +18,6 @@ void DynamicEfficiencyOptions::validate() const {
 
 namespace {
 
-/// Total loss (sliding + rolling) over one mesh period on `phases` midpoints at one force.
-std::vector<double> loss_curve(const geometry::GearPairGeometry& g, model::OperatingPoint op,
-                               MeshLossOptions o, const MeshLossMedia& media, double normal_force, int phases) {
-  op.pinion_torque = normal_force * g.radii(0).base * std::cos(g.base_helix_angle());
-  o.positions = phases;
-  const auto r = MeshLoss(g, op, o, media).solve();
-  std::vector<double> loss(r.sliding_loss.size());
-  std::transform(r.sliding_loss.begin(), r.sliding_loss.end(), r.rolling_loss.begin(), loss.begin(), std::plus<>());
-  return loss;
-}
-
 /// Periodic linear interpolation of a curve given on the midpoints (k + ½)/n of [0, 1).
 double at_phase(const std::vector<double>& curve, double phase) {
   const auto n = static_cast<double>(curve.size());
@@ -41,15 +30,41 @@ double at_phase(const std::vector<double>& curve, double phase) {
 
 }  // namespace
 
-DynamicEfficiencyResult dynamic_efficiency(const geometry::GearPairGeometry& g, const model::OperatingPoint& nominal,
-                                           const MeshLossOptions& loss_options, const MeshLossMedia& media,
-                                           const std::vector<double>& time,
-                                           const std::vector<std::vector<double>>& mesh_forces,
-                                           double mesh_frequency, DynamicEfficiencyOptions options) {
-  options.validate();
+DynamicEfficiency::DynamicEfficiency(const geometry::GearPairGeometry& g, const model::OperatingPoint& nominal,
+                                     MeshLossOptions loss_options, MeshLossMedia media, std::size_t meshes,
+                                     DynamicEfficiencyOptions options)
+    : geometry_(g),
+      nominal_(nominal),
+      loss_options_(std::move(loss_options)),
+      media_(std::move(media)),
+      meshes_(meshes),
+      options_(options) {
+  options_.validate();
   if (g.pair().herringbone)
     throw InputError("dynamic_efficiency: give one helical half of a herringbone pair and one force series per half");
-  if (mesh_forces.empty()) throw InputError("dynamic_efficiency: no mesh-force series");
+  if (meshes_ == 0) throw InputError("dynamic_efficiency: no mesh-force series");
+  const double f_nominal = nominal_.pinion_torque / (g.radii(0).base * std::cos(g.base_helix_angle())) /
+                           static_cast<double>(meshes_);
+  static_curve_ = loss_curve(f_nominal);
+}
+
+/// Total loss (sliding + rolling) over one mesh period on `phases` midpoints at one force.
+std::vector<double> DynamicEfficiency::loss_curve(double normal_force) const {
+  model::OperatingPoint op = nominal_;
+  op.pinion_torque = normal_force * geometry_.radii(0).base * std::cos(geometry_.base_helix_angle());
+  MeshLossOptions o = loss_options_;
+  o.positions = options_.phases;
+  const auto r = MeshLoss(geometry_, op, o, media_).solve();
+  std::vector<double> loss(r.sliding_loss.size());
+  std::transform(r.sliding_loss.begin(), r.sliding_loss.end(), r.rolling_loss.begin(), loss.begin(), std::plus<>());
+  return loss;
+}
+
+DynamicEfficiencyResult DynamicEfficiency::evaluate(const std::vector<double>& time,
+                                                    const std::vector<std::vector<double>>& mesh_forces,
+                                                    double mesh_frequency) const {
+  if (mesh_forces.size() != meshes_)
+    throw InputError(fmt::format("dynamic_efficiency: {} mesh-force series for {} meshes", mesh_forces.size(), meshes_));
   for (const auto& f : mesh_forces)
     if (f.size() != time.size())
       throw InputError(fmt::format("dynamic_efficiency: a force series has {} samples for {} times", f.size(), time.size()));
@@ -63,19 +78,16 @@ DynamicEfficiencyResult dynamic_efficiency(const geometry::GearPairGeometry& g, 
       if (f > 0.0) f_lo = std::min(f_lo, f), f_hi = std::max(f_hi, f);
   DynamicEfficiencyResult r;
   r.time = time;
-  const double p_in = nominal.pinion_torque * nominal.pinion_speed;
-  const double f_nominal = nominal.pinion_torque / (g.radii(0).base * std::cos(g.base_helix_angle())) /
-                           static_cast<double>(mesh_forces.size());
-  const auto static_curve = loss_curve(g, nominal, loss_options, media, f_nominal, options.phases);
-  r.static_mean = 1.0 - static_cast<double>(mesh_forces.size()) *
-                            std::accumulate(static_curve.begin(), static_curve.end(), 0.0) /
-                            static_cast<double>(static_curve.size()) / p_in;
+  const double p_in = nominal_.pinion_torque * nominal_.pinion_speed;
+  r.static_mean = 1.0 - static_cast<double>(meshes_) *
+                            std::accumulate(static_curve_.begin(), static_curve_.end(), 0.0) /
+                            static_cast<double>(static_curve_.size()) / p_in;
   std::vector<std::vector<double>> curves;
   if (f_hi > 0.0) {
     if (f_hi - f_lo < 1e-12 * f_hi) f_lo = f_hi * (1.0 - 1e-9);  // a constant force: one curve suffices
-    for (int k = 0; k < options.load_levels; ++k) {
-      r.load_levels.push_back(f_lo + (f_hi - f_lo) * k / (options.load_levels - 1));
-      curves.push_back(loss_curve(g, nominal, loss_options, media, r.load_levels.back(), options.phases));
+    for (int k = 0; k < options_.load_levels; ++k) {
+      r.load_levels.push_back(f_lo + (f_hi - f_lo) * k / (options_.load_levels - 1));
+      curves.push_back(loss_curve(r.load_levels.back()));
     }
   }
   for (std::size_t i = 0; i < time.size(); ++i) {
@@ -94,6 +106,15 @@ DynamicEfficiencyResult dynamic_efficiency(const geometry::GearPairGeometry& g, 
   }
   r.mean = std::accumulate(r.efficiency.begin(), r.efficiency.end(), 0.0) / static_cast<double>(r.efficiency.size());
   return r;
+}
+
+DynamicEfficiencyResult dynamic_efficiency(const geometry::GearPairGeometry& g, const model::OperatingPoint& nominal,
+                                           const MeshLossOptions& loss_options, const MeshLossMedia& media,
+                                           const std::vector<double>& time,
+                                           const std::vector<std::vector<double>>& mesh_forces,
+                                           double mesh_frequency, DynamicEfficiencyOptions options) {
+  return DynamicEfficiency(g, nominal, loss_options, media, mesh_forces.size(), options)
+      .evaluate(time, mesh_forces, mesh_frequency);
 }
 
 }  // namespace gearbench::efficiency

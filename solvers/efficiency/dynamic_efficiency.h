@@ -29,12 +29,41 @@ struct DynamicEfficiencyResult {
   double static_mean = 0.0;
 };
 
+/// The loss-versus-load curves of one drive, in two steps: construction computes the static
+/// loss over one mesh period at the nominal force per mesh, so that a friction law refusing
+/// the nominal contact (e.g. a Hertz pressure beyond its range) fails there, before the
+/// dynamics run whose forces evaluate() then takes.
+///
 /// `mesh_geometry`: the geometry of ONE mesh (a spur pair or one helical half; a herringbone
-/// pair is given as its half and two force series). `nominal`: the operating point of the
-/// whole drive (P_in = T1·ω1; the nominal force per mesh is T1/(r_b1·cos β_b)/meshes).
-/// `mesh_forces[j][i]`: normal force of mesh j at time[i] [N]; a force ≤ 0 (contact loss)
-/// dissipates nothing. The mesh phase is t·mesh_frequency, zero when a pair enters at A
-/// (the convention of Spur6Dynamics' recorded time).
+/// pair is given as its half and two force series); it must outlive this object.
+/// `nominal`: the operating point of the whole drive (P_in = T1·ω1; the nominal force per
+/// mesh is T1/(r_b1·cos β_b)/meshes).
+class DynamicEfficiency {
+ public:
+  DynamicEfficiency(const geometry::GearPairGeometry& mesh_geometry, const model::OperatingPoint& nominal,
+                    MeshLossOptions loss_options, MeshLossMedia media, std::size_t meshes,
+                    DynamicEfficiencyOptions options = {});
+
+  /// `mesh_forces[j][i]`: normal force of mesh j at time[i] [N], one series per mesh; a
+  /// force ≤ 0 (contact loss) dissipates nothing. The mesh phase is t·mesh_frequency, zero
+  /// when a pair enters at A (the convention of Spur6Dynamics' recorded time).
+  [[nodiscard]] DynamicEfficiencyResult evaluate(const std::vector<double>& time,
+                                                 const std::vector<std::vector<double>>& mesh_forces,
+                                                 double mesh_frequency) const;
+
+ private:
+  [[nodiscard]] std::vector<double> loss_curve(double normal_force) const;
+
+  const geometry::GearPairGeometry& geometry_;
+  model::OperatingPoint nominal_;
+  MeshLossOptions loss_options_;
+  MeshLossMedia media_;
+  std::size_t meshes_;
+  DynamicEfficiencyOptions options_;
+  std::vector<double> static_curve_;  ///< loss at the nominal force per mesh [W]
+};
+
+/// DynamicEfficiency of mesh_forces.size() meshes, evaluated at once.
 DynamicEfficiencyResult dynamic_efficiency(const geometry::GearPairGeometry& mesh_geometry,
                                            const model::OperatingPoint& nominal, const MeshLossOptions& loss_options,
                                            const MeshLossMedia& media, const std::vector<double>& time,
