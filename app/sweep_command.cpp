@@ -94,6 +94,8 @@ json load_base(const ordered_json& base, const std::string& sweep_dir) {
 }
 
 SweepAxis parse_axis(const std::string& key, const ordered_json& values) {
+  if (const auto why = model::unread(values))
+    throw InputError(fmt::format("vary.\"{}\": {}", model::shown_text(key), *why));
   if (!values.is_array() || values.empty())
     throw InputError(fmt::format("vary.\"{}\" = {}: must be a non-empty array of values", model::shown_text(key),
                                  model::shown_value(json(values))));

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "model/errors.h"
+#include "model/json_reader.h"
 #include "sweep_command.h"
 
 namespace gearbench::app {
@@ -78,6 +79,30 @@ TEST(SweepGrid, BadSpecsNameTheKey) {
   s = efficiency_sweep();
   s["vary"] = ordered_json::parse(R"({"gear_pair.teeth.x": [1]})");  // not an array index
   expect_error(s, "gear_pair.teeth.x");
+}
+
+// A value past the value cap is not read (issue 20): under an unknown key the key is
+// refused as unknown, as a vary axis the axis names the cap.
+TEST(SweepGrid, AValuePastTheCapIsNotRead) {
+  std::string long_array = "[0";
+  for (std::size_t i = 0; i < model::max_json_values; ++i) long_array += ",0";
+  long_array += "]";
+  const auto error_of = [](const std::string& text) {
+    try {
+      parse_sweep_spec(model::parse_ordered_json(text, "sweep.json"), ".", "long");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string base = R"("base": ")" GEARBENCH_SOURCE_DIR R"(/cases/seed004_spur_efficiency.json")";
+  EXPECT_EQ(error_of("{" + base + R"(, "vary": {"operating.pinion_speed_rpm": [500]}, "outputs": ["efficiency_mean"],
+                     "bogus": )" + long_array + "}"),
+            "bogus: unknown key; allowed keys are base, vary, outputs, description");
+  EXPECT_EQ(error_of("{" + base + R"(, "vary": {"operating.pinion_speed_rpm": )" + long_array +
+                     R"(}, "outputs": ["efficiency_mean"]})"),
+            R"(vary."operating.pinion_speed_rpm": more than 1000000 values in one file, the most gearbench reads )"
+            "(a case holds a few hundred)");
 }
 
 TEST(SweepRun, FailedCaseIsRecordedAndTheRestRuns) {

@@ -31,44 +31,70 @@ std::string format_value(double v) { return fmt::format("{}", v); }
 
 namespace {
 
-/// Follows the parser through the document (it calls back at every key, value and bracket)
-/// to know the key path it is at, so that an error inside the text can name its key; and
-/// refuses a key given twice in one object, nesting deeper than max_json_depth and more than
-/// max_json_values values.
+/// Why a value was not kept: the subtype of the binary value (which JSON text never yields)
+/// that stands in its place.
+enum class Unread : std::uint8_t { too_many_values = 1, too_deep = 2 };
+
+/// "more than 1000000 values", as a message shows the placeholder in place of a value.
+std::string unread_label(Unread why) {
+  if (why == Unread::too_deep) return fmt::format("nested deeper than {} levels", max_json_depth);
+  return fmt::format("more than {} values", max_json_values);
+}
+
+/// The error of a value not read.
+std::string unread_text(Unread why) {
+  if (why == Unread::too_deep) return unread_label(why);
+  return unread_label(why) + " in one file, the most gearbench reads (a case holds a few hundred)";
+}
+
 template <class Json>
-class ParsePosition {
+std::optional<Unread> unread_reason(const Json& value) {
+  if (!value.is_binary()) return std::nullopt;
+  return static_cast<Unread>(value.get_binary().subtype());
+}
+
+/// Builds the document from the parser's events (nlohmann's SAX interface), knowing the key
+/// path it is at so that an error inside the text can name its key. Refuses a key given
+/// twice in one object. Nesting deeper than max_json_depth or more than max_json_values
+/// values are not read: the innermost value under a key that holds the excess is skipped to
+/// its end and kept as an Unread placeholder, so that ObjectReader refuses an unknown key as
+/// unknown, and names the cap for a known one; with no key to hold it, the cap is the error.
+template <class Json>
+class DocumentBuilder {
  public:
-  bool operator()(int /*depth*/, typename Json::parse_event_t event, Json& parsed) {
-    using Event = typename Json::parse_event_t;
-    if ((event == Event::value || event == Event::object_start || event == Event::array_start) &&
-        ++values_ > max_json_values)
-      throw InputError(fmt::format("{}: more than {} values in one file, the most gearbench reads (a case holds "
-                                   "a few hundred)", where(), max_json_values));
-    switch (event) {
-      case Event::object_start:
-      case Event::array_start:
-        if (frames_.size() >= max_json_depth)
-          throw InputError(fmt::format("{}: nested deeper than {} levels", where(), max_json_depth));
-        frames_.push_back({event == Event::array_start, {}, 0, {}});
-        break;
-      case Event::key: {
-        auto& frame = frames_.back();
-        frame.key = parsed.template get<std::string>();
-        if (!frame.keys.insert(frame.key).second)
-          throw InputError(fmt::format("{}: duplicate key; give each key once", where()));
-        break;
-      }
-      case Event::object_end:
-      case Event::array_end:
-        frames_.pop_back();
-        element_done();
-        break;
-      case Event::value:
-        element_done();
-        break;
-    }
+  using number_integer_t = typename Json::number_integer_t;
+  using number_unsigned_t = typename Json::number_unsigned_t;
+  using number_float_t = typename Json::number_float_t;
+  using string_t = typename Json::string_t;
+  using binary_t = typename Json::binary_t;
+
+  bool null() { return value(nullptr); }
+  bool boolean(bool v) { return value(v); }
+  bool number_integer(number_integer_t v) { return value(v); }
+  bool number_unsigned(number_unsigned_t v) { return value(v); }
+  bool number_float(number_float_t v, const string_t& /*text*/) { return value(v); }
+  bool string(string_t& v) { return value(std::move(v)); }
+  bool binary(binary_t& v) { return value(std::move(v)); }  // never called: JSON text has no binary values
+  bool start_object(std::size_t /*size*/) { return open(false); }
+  bool start_array(std::size_t /*size*/) { return open(true); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+
+  bool key(string_t& k) {
+    if (skipping()) return true;
+    auto& frame = frames_.back();
+    frame.key = k;
+    if (!frame.keys.insert(k).second)
+      throw InputError(fmt::format("{}: duplicate key; give each key once", where()));
     return true;
   }
+
+  template <class Exception>
+  bool parse_error(std::size_t /*position*/, const std::string& /*token*/, const Exception& e) {
+    throw e;
+  }
+
+  Json& document() { return root_; }
 
   /// "gear_pair.teeth[1]"; "" at the top.
   [[nodiscard]] std::string where() const {
@@ -84,16 +110,97 @@ class ParsePosition {
 
  private:
   struct Frame {
+    Json* value;               ///< the container, in the document
     bool array;
-    std::string key;          ///< the key being read (objects)
-    std::size_t index;        ///< the element being read (arrays)
-    std::set<std::string> keys;
+    std::size_t values_before; ///< values_ when it opened
+    std::string key = {};      ///< the key being read (objects)
+    std::size_t index = 0;     ///< the element being read (arrays)
+    std::set<std::string> keys = {};
   };
+  static constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+
+  [[nodiscard]] bool skipping() const { return skipped_ != none; }
+
+  bool value(Json v) {
+    if (skipping()) return true;
+    if (++values_ > max_json_values) {
+      skip(Unread::too_many_values);
+      return true;
+    }
+    insert(std::move(v));
+    element_done();
+    return true;
+  }
+
+  bool open(bool array) {
+    if (skipping()) {
+      ++skipped_depth_;
+      return true;
+    }
+    if (frames_.size() >= max_json_depth) {
+      skip(Unread::too_deep);
+      ++skipped_depth_;
+      return true;
+    }
+    const std::size_t before = values_++;
+    frames_.push_back({insert(array ? Json::array() : Json::object()), array, before});
+    if (values_ > max_json_values) skip(Unread::too_many_values);
+    return true;
+  }
+
+  bool close() {
+    if (skipped_depth_ > 0) {
+      --skipped_depth_;
+      return true;
+    }
+    Json* const closed = frames_.back().value;
+    const std::size_t values_before = frames_.back().values_before;
+    frames_.pop_back();
+    if (frames_.size() == skipped_) {
+      *closed = Json::binary({}, static_cast<std::uint8_t>(why_));
+      values_ = values_before + 1;
+      skipped_ = none;
+    }
+    if (!skipping()) element_done();
+    return true;
+  }
+
+  /// Adds `v` where the parser is; returns it in the document.
+  Json* insert(Json v) {
+    if (frames_.empty()) {
+      root_ = std::move(v);
+      return &root_;
+    }
+    auto& top = frames_.back();
+    if (top.array) {
+      top.value->push_back(std::move(v));
+      return &top.value->back();
+    }
+    return &((*top.value)[top.key] = std::move(v));
+  }
+
+  /// Skips the innermost open container under a key to its end; the cap is the error
+  /// when there is none.
+  void skip(Unread why) {
+    for (std::size_t i = frames_.size(); i-- > 1;)
+      if (!frames_[i - 1].array) {
+        skipped_ = i;
+        why_ = why;
+        return;
+      }
+    throw InputError(fmt::format("{}: {}", where(), unread_text(why)));
+  }
+
   void element_done() {
     if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
   }
+
+  Json root_;
   std::vector<Frame> frames_;
   std::size_t values_ = 0;
+  std::size_t skipped_ = none;    ///< index in frames_ of the container being skipped
+  std::size_t skipped_depth_ = 0; ///< containers opened inside it (not in frames_)
+  Unread why_ = Unread::too_many_values;
 };
 
 /// The part of a parser message after its "[json.exception...] ... at line 1, column 2: ".
@@ -104,11 +211,10 @@ std::string parser_reason(const std::string& what) {
 
 template <class Json>
 Json parse_tracked(const std::string& text, const std::string& source_name) {
-  ParsePosition<Json> position;
+  DocumentBuilder<Json> builder;
   try {
-    return Json::parse(text, [&position](int depth, typename Json::parse_event_t event, Json& parsed) {
-      return position(depth, event, parsed);
-    });
+    Json::sax_parse(text, &builder);
+    return std::move(builder.document());
   } catch (const typename Json::parse_error& e) {
     // Count lines up to the failing byte: nlohmann reports a byte offset (1-based).
     const std::size_t upto = std::min<std::size_t>(e.byte, text.size());
@@ -119,7 +225,7 @@ Json parse_tracked(const std::string& text, const std::string& source_name) {
     // The one range error of the parser: "number overflow parsing '1e999'".
     const std::string what = e.what();
     const auto open = what.find('\''), close = what.rfind('\'');
-    const auto where = position.where();
+    const auto where = builder.where();
     throw InputError(fmt::format("{} = {}: beyond the range of a double (about ±1.8e308)",
                                  where.empty() ? shown_text(source_name) : where,
                                  shown_text(what.substr(open + 1, close - open - 1))));
@@ -157,6 +263,16 @@ std::string read_text_file(const std::string& path, const std::string& what) {
 
 json read_json_file(const std::string& path) { return parse_json(read_text_file(path), path); }
 
+std::optional<std::string> unread(const json& value) {
+  const auto why = unread_reason(value);
+  return why ? std::optional(unread_text(*why)) : std::nullopt;
+}
+
+std::optional<std::string> unread(const nlohmann::ordered_json& value) {
+  const auto why = unread_reason(value);
+  return why ? std::optional(unread_text(*why)) : std::nullopt;
+}
+
 namespace {
 /// At most `n` bytes of `s`, not cutting a UTF-8 sequence, with "..." when cut.
 std::string cut(const std::string& s, std::size_t n) {
@@ -172,6 +288,8 @@ constexpr std::size_t shown_length = 40;
 void render(const json& v, std::string& out) {
   if (v.is_string()) {
     out += '"' + shown_text(v.get<std::string>()) + '"';
+  } else if (const auto why = unread_reason(v)) {
+    out += fmt::format("({})", unread_label(*why));
   } else if (v.is_array() || v.is_object()) {
     out += v.is_array() ? '[' : '{';
     bool first = true;
@@ -218,6 +336,7 @@ std::string type_name(const json& v) {
   if (v.is_boolean()) return "a boolean";
   if (v.is_array()) return "an array";
   if (v.is_object()) return "an object";
+  if (v.is_binary()) return "a value not read";
   return "null";
 }
 }  // namespace
@@ -244,6 +363,7 @@ const json& ObjectReader::require(const std::string& key) {
   const auto it = object_.find(key);
   if (it == object_.end())
     throw InputError(fmt::format("{}: missing required key", key_path(key)));
+  if (const auto why = unread(*it)) throw InputError(fmt::format("{}: {}", key_path(key), *why));
   return *it;
 }
 

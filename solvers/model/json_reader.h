@@ -38,8 +38,12 @@ inline constexpr std::size_t max_file_bytes = std::size_t{64} << 20;
 inline constexpr std::size_t max_json_values = 1'000'000;
 
 /// Parses JSON text; malformed input becomes an InputError that gives the line number, and
-/// a number beyond double range, a duplicate key, nesting deeper than max_json_depth or more
-/// than max_json_values values one that names the key path.
+/// a number beyond double range or a duplicate key one that names the key path.
+/// Nesting deeper than max_json_depth or more than max_json_values values is not read: the
+/// innermost value under a key that holds the excess is skipped to its end and left in the
+/// document as a placeholder (see unread), so that the key is refused as unknown when it is
+/// (ObjectReader::finish), and by the cap when a reader asks for it. With no key to hold the
+/// excess (a long or deep array at the top), the cap is the InputError.
 nlohmann::json parse_json(const std::string& text, const std::string& source_name);
 /// The same, keeping the keys in the order written.
 nlohmann::ordered_json parse_ordered_json(const std::string& text, const std::string& source_name);
@@ -50,6 +54,11 @@ std::string read_text_file(const std::string& path, const std::string& what = "c
 
 /// Reads a file and parses it (InputError if missing, too large or malformed).
 nlohmann::json read_json_file(const std::string& path);
+
+/// For the placeholder of a value that parse_json did not read, why ("nested deeper than 64
+/// levels", "more than 1000000 values in one file, …"); nullopt for any other value.
+std::optional<std::string> unread(const nlohmann::json& value);
+std::optional<std::string> unread(const nlohmann::ordered_json& value);
 
 /// Text from the input as a message shows it: control characters escaped (a NUL or a line
 /// break cannot cut or forge the one-line message), at most a few dozen characters.
