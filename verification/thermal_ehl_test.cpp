@@ -119,6 +119,28 @@ TEST(ThermalLineContact, HeatBalanceCloses) {
   EXPECT_LT(r.h_min, r.isothermal_h_min);
 }
 
+// A pressure solve that cannot converge (one cycle to a residual of 1e-14) is a status of
+// try_solve, not an exception, from the isothermal start onward; solve() turns it into a
+// ConvergenceError that says so.
+TEST(ThermalLineContact, UnconvergedStartIsAStatus) {
+  const lubricant::ThermalRheology rheology(roelands_oil(), T0);
+  auto o = small_grid();
+  o.grid.max_cycles = 1;
+  o.grid.tolerance = 1e-14;
+  const ThermalLineContact contact_solver(contact(2.5, 1.5), rheology, steel(), o);
+  ThermalEhlResult r;
+  ASSERT_NO_THROW(r = contact_solver.try_solve());
+  EXPECT_FALSE(r.converged);
+  EXPECT_FALSE(r.pressure.converged);
+  EXPECT_EQ(r.iterations, 0);
+  try {
+    (void)contact_solver.solve();
+    ADD_FAILURE() << "no ConvergenceError";
+  } catch (const ConvergenceError& e) {
+    EXPECT_NE(std::string(e.what()).find("pressure solve NOT converged"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ThermalLineContact, RejectsBadOptions) {
   const lubricant::ThermalRheology rheology(roelands_oil(), T0);
   auto o = small_grid();

@@ -66,7 +66,7 @@ double largest_change(const std::vector<std::vector<double>>& a, const std::vect
 ThermalEhlResult ThermalLineContact::try_solve() const {
   const auto start = std::chrono::steady_clock::now();
   const LineContactProblem problem(data_);
-  const EhlResult isothermal = LineContactSolver(problem, options_.grid).solve();
+  const EhlResult isothermal = LineContactSolver(problem, options_.grid).try_solve();
   ThermalEhlResult r;
   r.isothermal_h_central = isothermal.h_central;
   r.isothermal_h_min = isothermal.h_min;
@@ -74,6 +74,11 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
   r.isothermal_friction_coefficient = isothermal.friction_coefficient;
   r.pressure_cycles = isothermal.cycles;
   r.work_units = isothermal.work_units;
+  if (!isothermal.converged) {  // the start did not converge: a status, not an exception (issue 21)
+    r.pressure = isothermal;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
+  }
 
   const std::size_t n = isothermal.X.size();
   const double ls = problem.length_scale(), ps = problem.pressure_scale(), hs = problem.film_scale();

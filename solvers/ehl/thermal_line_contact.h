@@ -85,7 +85,8 @@ class ThermalLineContact {
                      const model::ThermalSolids& solids, ThermalEhlOptions options);
   /// Throws ConvergenceError (with the histories) when the iteration does not converge.
   [[nodiscard]] ThermalEhlResult solve() const;
-  /// The same, returning converged = false instead of throwing.
+  /// The same, returning converged = false instead of throwing (also when the isothermal
+  /// start does not converge: `pressure` then holds it).
   [[nodiscard]] ThermalEhlResult try_solve() const;
 
   /// The isothermal contact data at the inlet temperature (Roelands, Dowson–Higginson).
