@@ -236,27 +236,16 @@ std::optional<DynamicEfficiencySpec> read_dynamic_efficiency(model::ObjectReader
 /// Constructed before the integration: the static loss at the nominal force, computed then,
 /// refuses a contact out of the friction law's range (e.g. its Hertz pressure) at once, not
 /// after the run.
-class DynamicEfficiencyRun {
- public:
-  DynamicEfficiencyRun(const DynamicEfficiencySpec& spec, const model::GearCase& c, std::size_t meshes)
-      : mesh_geometry_(c.gear_pair.one_mesh()),
-        efficiency_(mesh_geometry_, *c.operating, spec.loss, {c.materials, c.lubricant}, meshes, spec.curves),
-        friction_model_(spec.loss.friction_model) {}
-  DynamicEfficiencyRun(const DynamicEfficiencyRun&) = delete;  // efficiency_ refers to mesh_geometry_
-  DynamicEfficiencyRun& operator=(const DynamicEfficiencyRun&) = delete;
+efficiency::DynamicEfficiency dynamic_efficiency(const DynamicEfficiencySpec& spec, const model::GearCase& c,
+                                                 std::size_t meshes) {
+  return {geometry::GearPairGeometry(c.gear_pair.one_mesh()), *c.operating, spec.loss, {c.materials, c.lubricant},
+          meshes, spec.curves};
+}
 
-  [[nodiscard]] json evaluate(const std::vector<double>& time, const std::vector<std::vector<double>>& forces,
-                              double mesh_frequency) const {
-    const auto r = efficiency_.evaluate(time, forces, mesh_frequency);
-    return {{"mean", r.mean}, {"static_mean", r.static_mean}, {"efficiency", r.efficiency},
-            {"load_levels_N", r.load_levels}, {"friction_model", lubricant::friction_model_name(friction_model_)}};
-  }
-
- private:
-  geometry::GearPairGeometry mesh_geometry_;
-  efficiency::DynamicEfficiency efficiency_;
-  lubricant::FrictionModel friction_model_;
-};
+json dynamic_efficiency_json(const efficiency::DynamicEfficiencyResult& r, const DynamicEfficiencySpec& spec) {
+  return {{"mean", r.mean}, {"static_mean", r.static_mean}, {"efficiency", r.efficiency},
+          {"load_levels_N", r.load_levels}, {"friction_model", lubricant::friction_model_name(spec.loss.friction_model)}};
+}
 
 /// What differs between the two models for run_model: reading, result JSON and the series
 /// that the dynamic efficiency and the speed sweep take.
@@ -316,15 +305,17 @@ json run_model(model::ObjectReader& root, const json& case_json, const model::Ge
   const auto efficiency_spec = read_dynamic_efficiency(root);
   root.finish();
   const typename Model::Solver solver(geometry, *c.materials, *c.operating, options);
-  std::optional<DynamicEfficiencyRun> efficiency;  // before the integration: it checks the friction law's range
-  if (efficiency_spec) efficiency.emplace(*efficiency_spec, c, Model::meshes);
+  std::optional<efficiency::DynamicEfficiency> efficiency;  // before the integration: it checks the friction law's range
+  if (efficiency_spec) efficiency.emplace(dynamic_efficiency(*efficiency_spec, c, Model::meshes));
   const auto r = solver.solve();
   json result = Model::result(solver, r);
   result["notes"] = periodicity_notes(r.periodicity);
   for (const auto& note : Model::notes(solver)) result["notes"].push_back(note);
   result["friction_model"] = lubricant::friction_model_name(Model::law(options).model);
   result["contact_loss"] = contact_json(options.backlash, r);
-  if (efficiency) result["dynamic_efficiency"] = efficiency->evaluate(r.time, Model::forces(r), r.mesh_frequency);
+  if (efficiency)
+    result["dynamic_efficiency"] =
+        dynamic_efficiency_json(efficiency->evaluate(r.time, Model::forces(r), r.mesh_frequency), *efficiency_spec);
   if (sweep)
     result["speed_sweep"] = sweep_json(dynamics::speed_sweep(*sweep, *c.operating, [&](const model::OperatingPoint& op) {
       const auto point = typename Model::Solver(geometry, *c.materials, op, options).solve();

@@ -35,7 +35,7 @@ struct DynamicEfficiencyResult {
 /// dynamics run whose forces evaluate() then takes.
 ///
 /// `mesh_geometry`: the geometry of ONE mesh (a spur pair or one helical half; a herringbone
-/// pair is given as its half and two force series); it must outlive this object.
+/// pair is given as its half and two force series), kept as a copy.
 /// `nominal`: the operating point of the whole drive (P_in = T1·ω1; the nominal force per
 /// mesh is T1/(r_b1·cos β_b)/meshes).
 class DynamicEfficiency {
@@ -54,7 +54,7 @@ class DynamicEfficiency {
  private:
   [[nodiscard]] std::vector<double> loss_curve(double normal_force) const;
 
-  const geometry::GearPairGeometry& geometry_;
+  geometry::GearPairGeometry geometry_;
   model::OperatingPoint nominal_;
   MeshLossOptions loss_options_;
   MeshLossMedia media_;
