@@ -14,6 +14,7 @@
 // involutes of one base circle lie r_b1·Δθ_s apart along their common normals, exactly.
 // The gap is zero, with zero rate, when the corner is at A (conjugate action); contact under
 // load is where it equals δ, found by bisection; its rate there is the impact velocity.
+// The same gap drives the reference for the pulse's peak (entering_pair_peak_force).
 #include "model/gear_pair.h"
 
 namespace gearbench::reference {
@@ -27,5 +28,13 @@ struct CornerContact {
 /// Throws std::invalid_argument for a non-positive speed or deflection, std::runtime_error
 /// if the gap does not reach δ within a mesh cycle before A.
 CornerContact corner_contact(const model::GearPair& pair, double pinion_speed, double deflection);
+
+/// The peak contact force [N] of the entering pair in seed 000 eq. 6's own model, a mass `mass` [kg]
+/// (the pair's equivalent mass along the normal) and a spring `stiffness` [N/m] (1/q_s), but under the
+/// overlap the exact corner approach imposes, p = δ − gap, instead of a closing speed held through the
+/// pulse: m·ẍ = k·max(0, p − x) from first contact, integrated numerically (RK4). Eq. 6's
+/// v_s·√(m·k) is its limit for an approach long against the spring's period.
+double entering_pair_peak_force(const model::GearPair& pair, double pinion_speed, double deflection, double mass,
+                                double stiffness);
 
 }  // namespace gearbench::reference
