@@ -322,22 +322,34 @@ TEST(Cli, HerringboneDynamicsRunsSweepsAndValidates) {
     });
   };
   EXPECT_EQ(impact_notes(r["notes"]), 0) << r["notes"];
-  // The eq. 6 pulse at 2000 rpm compresses the mesh more than the approach supplies: a note
+  // Eq. 6 as printed at 2000 rpm compresses the mesh more than the approach supplies: a note
   // (docs/dynamics-model.md, "Mesh-in impact"); at 6000 rpm its mean would carry the load: refused.
+  // The pulse under the approach is noted as an upper estimate for a helical half.
   auto impact = j;
   impact.erase("speed_sweep_rpm");
   impact["mesh_in_impact"] = true;
+  const auto approach = run_gearbench("run " + write_case("herringbone_impact_approach", impact.dump()));
+  ASSERT_EQ(approach.exit_code, 0) << approach.err;
+  const auto ra = json::parse(approach.out);
+  EXPECT_EQ(impact_notes(ra["notes"]), 0) << ra["notes"];
+  EXPECT_NE(ra["notes"].dump().find("entry_fraction"), std::string::npos) << ra["notes"];
+  impact["mesh_in_impact_held_velocity"] = true;
   const auto noted = run_gearbench("run " + write_case("herringbone_impact", impact.dump()));
   ASSERT_EQ(noted.exit_code, 0) << noted.err;
   const auto rn = json::parse(noted.out);
   EXPECT_GT(rn["parameters"]["impact"]["compression_ratio"].get<double>(), 1.0);
   EXPECT_EQ(impact_notes(rn["notes"]), 1) << rn["notes"];
+  EXPECT_GT(rn["parameters"]["impact"]["peak_force_N"].get<double>(),
+            3.0 * ra["parameters"]["impact"]["peak_force_N"].get<double>());
   const std::pair<std::function<void(json&)>, std::string> bad[] = {
       {[](json& c) {
          c["mesh_in_impact"] = true;
+         c["mesh_in_impact_held_velocity"] = true;
          c["operating"]["pinion_speed_rpm"] = 6000;
        },
-       "mesh_in_impact = true: at operating.pinion_speed_rpm = 6000 and operating.pinion_torque_Nm = 309.09"},
+       "mesh_in_impact = true: at operating.pinion_speed_rpm = 6000, operating.pinion_torque_Nm = 309.09 and "
+       "base_pitch_error_um = 0"},
+      {[](json& c) { c["base_pitch_error_um"] = 500; }, "base_pitch_error_um"},
       {[](json& c) { c["bearings"]["floating_pinion"] = "yes"; }, "bearings.floating_pinion = \"yes\": must be true or false"},
       {[](json& c) { c["groove_coupling"]["axial_stiffness_N_per_m"] = -1; }, "groove_coupling.axial_stiffness_N_per_m"},
       {[](json& c) { c["mesh"]["harmonics"] = 60; }, "mesh.harmonics = 60"},

@@ -108,6 +108,9 @@ dynamics::Herringbone12Options read_herringbone_options(model::ObjectReader& roo
   read_common_options(root, c, o, o.mesh.friction_coefficient, o.mesh.friction_law);
   o.mesh.fillet = read_fillet(root);
   o.mesh_in_impact = optional_bool(root, case_json, "mesh_in_impact").value_or(o.mesh_in_impact);
+  o.impact_held_velocity =
+      optional_bool(root, case_json, "mesh_in_impact_held_velocity").value_or(o.impact_held_velocity);
+  o.base_pitch_error = 1e-6 * root.optional_number("base_pitch_error_um", Range::closed(0.0, 100.0)).value_or(0.0);
   o.half_offset = root.optional_number("half_offset_cycles", Range::closed(0.0, 1.0)).value_or(o.half_offset);
   return o;
 }
@@ -196,8 +199,11 @@ json herringbone12_result(const dynamics::Herringbone12Dynamics& solver, const d
                       {"mesh_damping_N_s_per_m", p.mesh_damping}, {"groove_axial_stiffness_N_per_m", p.k_groove},
                       {"groove_torsional_stiffness_N_m_per_rad", p.k_twist},
                       {"impact", {{"velocity_m_per_s", p.impact_velocity}, {"peak_force_N", p.impact_force},
-                                  {"duration_s", p.impact_duration}, {"approach_time_s", p.impact_approach_time},
-                                  {"compression_ratio", p.impact_compression_ratio}}}}},
+                                  {"held_velocity_peak_force_N", p.impact_held_force},
+                                  {"stiffness_N_per_m", p.impact_stiffness}, {"duration_s", p.impact_duration},
+                                  {"approach_time_s", p.impact_approach_time},
+                                  {"compression_ratio", p.impact_compression_ratio},
+                                  {"entry_fraction", p.impact_entry_fraction}}}}},
       {"diagnostics", {{"steps", r.steps}, {"rhs_evaluations", r.rhs_evaluations}, {"seconds", r.seconds},
                        {"periodicity", r.periodicity}, {"slicing_consistency", solver.mesh().slicing_consistency()},
                        {"harmonic_truncation", solver.mesh().truncation()}}},
@@ -264,15 +270,23 @@ struct Herringbone12Model {
   using Solver = dynamics::Herringbone12Dynamics;
   static constexpr auto read = read_herringbone_options;
   static constexpr auto result = herringbone12_result;
-  /// The mesh-in pulse outside the premise of seed eq. 6 (docs/dynamics-model.md, "Mesh-in impact").
+  /// What the mesh-in pulse stands for (docs/dynamics-model.md, "Mesh-in impact").
   static json notes(const Solver& solver) {
     const auto& p = solver.parameters();
-    if (!(p.impact_compression_ratio > 1.0)) return json::array();
-    return json::array({fmt::format(
-        "mesh_in_impact: the eq. 6 pulse compresses the mesh by {:.3g} times the loaded deflection that the entering "
-        "tooth's approach supplies (parameters.impact.compression_ratio; eq. 6 holds where it is <= 1, here below about "
-        "{:.0f} rpm at this torque), so it overstates the dynamic factor; it is off by default",
-        p.impact_compression_ratio, p.impact_premise_speed() * 30.0 / M_PI)});
+    json notes = json::array();
+    if (p.impact_compression_ratio > 1.0 && p.impact_force == p.impact_held_force)
+      notes.push_back(fmt::format(
+          "mesh_in_impact_held_velocity: eq. 6 as printed compresses the mesh by {:.3g} times the gap that the "
+          "entering tooth's approach closes (parameters.impact.compression_ratio; it holds where that is <= 1, here "
+          "below about {:.0f} rpm), so it overstates the dynamic factor",
+          p.impact_compression_ratio, p.impact_premise_speed() * 30.0 / M_PI));
+    if (p.impact_entry_fraction > 0.0)
+      notes.push_back(fmt::format(
+          "mesh_in_impact: the pulse engages the whole helical half at once, while its entering contact sweeps across "
+          "the face ({:.2g} % of the face width in premature contact at a time, parameters.impact.entry_fraction): an "
+          "upper estimate of the mesh-in impact",
+          100.0 * p.impact_entry_fraction));
+    return notes;
   }
   static constexpr std::size_t meshes = 2;  ///< the halves
   static std::vector<std::vector<double>> forces(const dynamics::Herringbone12Result& r) {

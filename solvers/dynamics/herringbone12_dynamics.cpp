@@ -70,6 +70,8 @@ void Herringbone12Options::validate() const {
   check_range(twist_damping, 0.0, 1e9, "groove_coupling.torsional_damping_N_m_s_per_rad");
   check_range(mesh_damping_ratio, 0.0, 1.0, "mesh_damping_ratio");
   check_range(half_offset, 0.0, 1.0, "half_offset_cycles");
+  if (!(base_pitch_error >= 0.0 && base_pitch_error <= 1e-4))
+    throw InputError(fmt::format("base_pitch_error_um = {}: allowed range is [0, 100]", base_pitch_error * 1e6));
   if (backlash && !(*backlash > 0.0 && *backlash <= 1e-2))
     throw InputError(fmt::format("backlash_um = {}: allowed range is (0, 10000]", *backlash * 1e6));
   mesh.validate();
@@ -140,33 +142,42 @@ Herringbone12Dynamics::Herringbone12Dynamics(const geometry::GearPairGeometry& g
   p_.static_force = p_.T_p / (p_.R_p * cb + mesh_.mean().chi_pinion);
   double mean_impact = 0.0;
   if (options_.mesh_in_impact) {
-    // Mesh-in impact (seed 000 eq. 6) with the first-order corner-contact velocity of the
-    // page: v_s = ω_g·√(2·δ̄·T1T2·ρ_2A/ρ_1A), δ̄ = F̄/k̄; q_s = 1/k_m at mesh-in.
+    // Mesh-in impact (seed 000 eq. 6) with the first-order corner-contact approach of the page: the corner
+    // closes the gap δ = δ̄ + f_pb (loaded deflection and base-pitch error) in Δt, v_s = 2δ/Δt =
+    // ω_g·√(2·δ·T1T2·ρ_2A/ρ_1A); q_s = 1/k_m at mesh-in. Eq. 6 holds v_s through the pulse: its peak
+    // v_s·√(m_e/q_s) times (√(1+φ²) − 1)/φ, φ = ω_s·Δt, is the peak of the same mass and spring under the
+    // approach, whose closing speed falls from v_s to zero at A (docs, "Mesh-in impact").
     const auto& path = geometry.path();
-    const double k_in = mesh_.at(0.0, 1e-9 * p_.period).stiffness;
-    p_.impact_duration = pi * std::sqrt(me / k_in);
+    p_.impact_stiffness = mesh_.at(0.0, 1e-9 * p_.period).stiffness;
+    const double omega_s = std::sqrt(p_.impact_stiffness / me);
+    p_.impact_duration = pi / omega_s;
+    const auto speed = [&] { return fmt::format("operating.pinion_speed_rpm = {:.6g}", operating.pinion_speed * 30.0 / pi); };
     if (p_.impact_duration >= p_.period)
-      throw InputError(fmt::format("mesh_in_impact = true: at operating.pinion_speed_rpm = {:.6g} the pulse lasts {:.4g} s, "
-                                   "longer than a mesh cycle ({:.4g} s); set mesh_in_impact false",
-                                   operating.pinion_speed * 30.0 / pi, p_.impact_duration, p_.period));
+      throw InputError(fmt::format("mesh_in_impact = true: at {} the pulse lasts {:.4g} s, longer than a mesh cycle "
+                                   "({:.4g} s); set mesh_in_impact false",
+                                   speed(), p_.impact_duration, p_.period));
     for (int iteration = 0; iteration < 50; ++iteration) {
-      const double delta_static = p_.static_force / p_.mean_mesh_stiffness;
-      p_.impact_velocity = p_.omega_g * std::sqrt(2.0 * delta_static * path.T2 * (path.T2 - path.A) / path.A);
-      p_.impact_force = p_.impact_velocity * std::sqrt(me * k_in);
+      const double gap = p_.static_force / p_.mean_mesh_stiffness + options_.base_pitch_error;
+      p_.impact_velocity = p_.omega_g * std::sqrt(2.0 * gap * path.T2 * (path.T2 - path.A) / path.A);
+      p_.impact_approach_time = 2.0 * gap / p_.impact_velocity;
+      p_.impact_held_force = p_.impact_velocity * std::sqrt(me * p_.impact_stiffness);
+      const double phi = omega_s * p_.impact_approach_time;
+      p_.impact_force = options_.impact_held_velocity ? p_.impact_held_force
+                                                      : p_.impact_held_force * (std::sqrt(1.0 + phi * phi) - 1.0) / phi;
+      p_.impact_compression_ratio = p_.impact_held_force / p_.impact_stiffness / gap;  // = 2/φ
       mean_impact = 2.0 / pi * p_.impact_force * p_.impact_duration / p_.period;
       p_.static_force = (p_.T_p - p_.R_p * mean_impact) / (p_.R_p * cb + mesh_.mean().chi_pinion);
       if (!(p_.static_force > 0.0))
-        throw InputError(fmt::format("mesh_in_impact = true: at operating.pinion_speed_rpm = {:.6g} and "
-                                     "operating.pinion_torque_Nm = {:.6g} the mean impact pulse ({:.4g} N) would carry "
-                                     "the whole load; set mesh_in_impact false",
-                                     operating.pinion_speed * 30.0 / pi, operating.pinion_torque, mean_impact));
+        throw InputError(fmt::format("mesh_in_impact = true: at {}, operating.pinion_torque_Nm = {:.6g} and "
+                                     "base_pitch_error_um = {:.6g} the mean impact pulse ({:.4g} N) would carry the "
+                                     "whole load; set mesh_in_impact false",
+                                     speed(), operating.pinion_torque, 1e6 * options_.base_pitch_error, mean_impact));
     }
-    // What feeds the pulse (docs, "Mesh-in impact"): the corner closes the gap δ̄ in Δt = 2δ̄/v_s,
-    // its closing speed falling linearly from v_s to 0 at A. Eq. 6 takes v_s as held while the
-    // pulse compresses the mesh by F_s·q_s: r = F_s·q_s/δ̄ > 1 asks for more than the approach gives.
-    const double delta_static = p_.static_force / p_.mean_mesh_stiffness;
-    p_.impact_approach_time = 2.0 * delta_static / p_.impact_velocity;
-    p_.impact_compression_ratio = p_.impact_force / k_in / delta_static;
+    // A helical half's entering contact sweeps across the face: the slices in premature contact at
+    // one instant span R_p·Ω_p·Δt of the path, i.e. R_p·Ω_p·Δt/tan β_b of the face width.
+    if (p_.beta_b > 0.0)
+      p_.impact_entry_fraction = std::min(
+          1.0, p_.R_p * p_.omega_p * p_.impact_approach_time / (std::tan(p_.beta_b) * pair.face_width));
   }
   p_.mean_impact_force = mean_impact;
   p_.T_g = p_.static_force * (p_.R_g * cb + mesh_.mean().chi_wheel) + p_.R_g * mean_impact;

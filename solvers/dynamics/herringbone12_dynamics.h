@@ -31,9 +31,13 @@ struct Herringbone12Options {
   double twist_damping = 0.0;        ///< [N·m·s/rad]
   bool floating_pinion = true;       ///< no axial bearing on the pinion (seed 000)
   double mesh_damping_ratio = 0.07;  ///< ζ_m per half
-  /// Seed 000 eq. 6 pulses; off by default: where r = F_s·q_s/δ̄ > 1 (seed 000 at 2000 rpm: 3.6) the
-  /// pulse takes more than the approach supplies (docs/dynamics-model.md, "Mesh-in impact").
+  /// Seed 000 eq. 6 pulses, their peak that of eq. 6's mass and spring under the corner's approach
+  /// (docs/dynamics-model.md, "Mesh-in impact"); off by default: a helical half engages gradually.
   bool mesh_in_impact = false;
+  /// Eq. 6 as printed (the closing speed held through the pulse), for comparison: with
+  /// r = F_s·q_s/δ > 1 (seed 000 at 2000 rpm: 3.6) it takes r times the compression the approach supplies.
+  bool impact_held_velocity = false;
+  double base_pitch_error = 0.0;     ///< f_pb [m], added to the loaded deflection the entering corner closes
   double half_offset = 0.0;          ///< the right half's mesh lags by this fraction of a mesh cycle
   /// Backlash b [m] along the normal, per half: contact loss on (docs, "Contact loss"); none: linear mesh.
   std::optional<double> backlash;
@@ -58,9 +62,12 @@ struct Herringbone12Parameters {
   double mean_mesh_stiffness = 0;            ///< k̄ per half [N/m]
   double mesh_damping = 0;                   ///< c_m at k̄ [N·s/m]
   double static_force = 0;                   ///< F̄_n per half [N]
-  double impact_velocity = 0, impact_force = 0, impact_duration = 0;  ///< eq. 6 pulse
-  double impact_approach_time = 0;      ///< Δt = 2δ̄/v_s: the corner's approach from first contact to A [s]
-  double impact_compression_ratio = 0;  ///< r = F_s·q_s/δ̄: the pulse's compression over the approach's
+  double impact_velocity = 0, impact_force = 0, impact_duration = 0;  ///< the pulse: v_s, peak, τ
+  double impact_stiffness = 0;          ///< 1/q_s = k_m at mesh-in [N/m]
+  double impact_held_force = 0;         ///< eq. 6 as printed, v_s·√(m_e/q_s) [N]
+  double impact_approach_time = 0;      ///< Δt = 2δ/v_s: the corner's approach from first contact to A [s]
+  double impact_compression_ratio = 0;  ///< r = F_s,held·q_s/δ = 2/(ω_s·Δt): eq. 6's compression over the approach's
+  double impact_entry_fraction = 0;     ///< helical: share of the face in premature contact at one instant
   /// The pinion speed [rad/s] below which the eq. 6 pulse keeps to its premise (r ≤ 1) at this
   /// load: r ∝ Ω at a fixed loaded deflection δ̄ (docs/dynamics-model.md, "Mesh-in impact").
   [[nodiscard]] double impact_premise_speed() const { return omega_p / impact_compression_ratio; }
