@@ -117,6 +117,7 @@ struct HerringboneProblem {
     dynamics::Herringbone12Options o;
     o.mesh.friction_coefficient = 0.05;
     o.mesh_in_impact = true;  // the study's workload: restarts at every pulse (docs, "Integrators")
+    o.impact_held_velocity = true;  // the pulses of eq. 6 as printed, as when the study was recorded
     o.runup_cycles = 0;
     o.record_cycles = cycles;
     o.integrator = i;

@@ -32,7 +32,8 @@ struct IntegratorMethodName {
   const char* key;
   const char* description;
   /// Offered in case files. Verner 6(5) and Fehlberg 8(7) are in the work–precision study
-  /// only: ARKODE's error test fails repeatedly on both models at some tolerances (docs).
+  /// only: ARKODE's error test fails 7 times running on both models at some tolerances, its
+  /// estimate falling only as h there, while the right-hand side is smooth (docs, "Integrators").
   bool offered;
 };
 /// Every method of the work–precision study, in the order of the docs.
