@@ -1,6 +1,8 @@
 // The lubricant catalogue through the CLI: `gearbench lubricants`, named oils in case files,
 // and the round trip of issue 24: a case given by name and the same case given by the
 // resolved numbers (as echoed under lubricant_resolved) give bit-identical results.
+#include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "support/cli_support.h"
@@ -60,6 +62,35 @@ TEST(LubricantCli, ByNameAndByResolvedNumbersGiveIdenticalResults) {
   expect_round_trip("seed004_pitch_point_ehl_named_oil.json");  // one-temperature seed oil, ehl_line
   expect_round_trip("tehl_point_fva3.json");                    // thermal form, an explicit conductivity
   expect_round_trip("seed001_micropitting_named_oil.json");     // the ISO/TR 15144-1 oil section
+}
+
+/// A lubricant section that names its oil from the catalogue ({"name"} or {"grade", "base"}).
+bool names_oil(const json& section) {
+  return section.is_object() && (section.contains("name") || section.contains("grade"));
+}
+
+// Issue 24, "done when": at least one case of every lubricated kind in cases/ names its oil.
+// A kind is lubricated when any of its cases has a "lubricant" section (or the ISO/TR 15144-1
+// "micropitting": {"oil"}); a new lubricated kind without a named case fails here.
+TEST(LubricantCli, EveryLubricatedKindHasACaseThatNamesItsOil) {
+  std::map<std::string, bool> lubricated;  // kind -> some case names its oil
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(GEARBENCH_SOURCE_DIR) + "/cases")) {
+    if (entry.path().extension() != ".json") continue;
+    const json c = read_case(entry.path().filename().string());
+    if (!c.is_object() || !c.contains("kind")) continue;
+    const bool has_lubricant = c.contains("lubricant") || (c.contains("micropitting") && c["micropitting"].contains("oil"));
+    if (!has_lubricant) continue;
+    const bool named = (c.contains("lubricant") && names_oil(c["lubricant"])) ||
+                       (c.contains("micropitting") && c["micropitting"].contains("oil") && names_oil(c["micropitting"]["oil"]));
+    auto& any_named = lubricated[c["kind"].get<std::string>()];
+    any_named = any_named || named;
+  }
+  // The lubricated kinds as of issue 24 must all be found (a renamed case directory or kind
+  // would otherwise make this test vacuous).
+  for (const char* kind : {"efficiency", "ehl_line", "ehl_transient", "tehl_point", "tehl_path", "oil_film_stiffness",
+                           "dynamics", "micropitting_iso"})
+    EXPECT_TRUE(lubricated.count(kind)) << kind << ": no case in cases/ with a lubricant";
+  for (const auto& [kind, named] : lubricated) EXPECT_TRUE(named) << kind << ": no case in cases/ names its oil";
 }
 
 TEST(LubricantCli, ListsAndResolves) {
