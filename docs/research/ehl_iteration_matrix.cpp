@@ -20,7 +20,9 @@ int main(int argc, char** argv) {
   if (getenv("XI")) o.xi_threshold = atof(getenv("XI"));
   if (getenv("OMJ")) o.omega_jacobi = atof(getenv("OMJ"));
   if (getenv("OMGS")) o.omega_gauss_seidel = atof(getenv("OMGS"));
-  auto ref = FasMultigrid(p, o, ContactState{}).solve();
+  EhlOptions oref = o;
+  if (getenv("REFXI")) oref.xi_threshold = atof(getenv("REFXI"));
+  auto ref = FasMultigrid(p, oref, ContactState{}).solve();
   printf("ref: %s\n", ref.message.c_str());
   std::vector<size_t> idx;
   for (size_t i = 1; i + 1 < ref.P.size(); ++i) if (ref.P[i] > 0) idx.push_back(i);
