@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "closed_form/iso6336_stiffness.h"
-#include "tooth_sections.h"
 #include "kind_registry.h"
 #include "model/case_reader.h"
 #include "model/errors.h"
@@ -13,14 +12,6 @@ namespace gearbench::app {
 namespace {
 
 using nlohmann::json;
-
-stiffness::BeamStart read_beam_start(model::ObjectReader& root) {
-  const auto name = root.optional_string("beam_start", {"improved", "straight", "base_circle"})
-                        .value_or("improved");
-  if (name == "straight") return stiffness::BeamStart::straight;
-  if (name == "base_circle") return stiffness::BeamStart::base_circle;
-  return stiffness::BeamStart::improved;
-}
 
 json vector_json(const std::vector<double>& v, double scale = 1.0) {
   json out = json::array();
@@ -35,22 +26,7 @@ json run_stiffness(const json& case_json) {
   const auto gear_case = model::read_gear_case(root);
   if (!gear_case.materials) throw InputError("materials: missing required key (kind stiffness)");
   stiffness::MeshStiffnessOptions options;
-  options.beam_start = read_beam_start(root);
-  if (root.has("fillet") && options.beam_start != stiffness::BeamStart::improved)
-    throw InputError("fillet = " + model::shown_value(case_json["fillet"]) +
-                     ": allowed only with beam_start \"improved\" (the other beams have no fillet)");
-  options.fillet = read_fillet(root);
-  options.positions = root.optional_integer("positions", 2, 100000).value_or(360);
-  options.path_points = root.optional_integer("path_points", 2, 100000).value_or(201);
-  options.slices = root.optional_integer("slices", 1, 10000).value_or(50);
-  if (root.has("foundation")) {
-    if (!case_json["foundation"].is_boolean())
-      throw InputError("foundation = " + model::shown_value(case_json["foundation"]) + ": must be true or false");
-    options.foundation = case_json["foundation"].get<bool>();
-  }
-  if (auto bore = root.optional_number_pair("bore_diameter_mm", model::Range::positive(1e7), "mm"))
-    options.bore_radius = std::array<double, 2>{0.5e-3 * (*bore)[0], 0.5e-3 * (*bore)[1]};
-  options.crack = read_crack(root, 2);
+  stiffness::MeshStiffnessOptions::table().read(root, options);
   root.finish();
 
   const geometry::GearPairGeometry geometry(gear_case.gear_pair);
@@ -80,6 +56,8 @@ json run_stiffness(const json& case_json) {
       {"components", components},
       {"hertz_N_per_m", r.hertz},
       {"slices", r.slices},
+      {"options_given", stiffness::MeshStiffnessOptions::table().to_json(r.options_given)},
+      {"options_used", stiffness::MeshStiffnessOptions::table().to_json(r.options_used)},
       {"iso6336", {{"q_prime", iso.q_prime},
                    {"c_prime_N_per_mm_um", iso.c_prime},
                    {"c_gamma_alpha_N_per_mm_um", iso.c_gamma_alpha},

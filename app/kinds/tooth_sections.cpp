@@ -1,5 +1,7 @@
 #include "tooth_sections.h"
 
+#include "stiffness/mesh_stiffness.h"
+
 #include <numbers>
 
 namespace gearbench::app {
@@ -8,11 +10,7 @@ std::optional<stiffness::GearCrack> read_crack(model::ObjectReader& root, int ma
   if (!root.has("crack")) return std::nullopt;
   auto c = root.object("crack");
   stiffness::GearCrack crack;
-  crack.crack.type = c.string("type", {"pitch", "root"}) == "pitch" ? stiffness::Crack::Type::pitch
-                                                                     : stiffness::Crack::Type::root;
-  crack.crack.length = c.number("length_mm", model::Range::closed(0.0, 1e4), "mm") * 1e-3;
-  crack.crack.angle = c.number("angle_deg", {0.0, 90.0, true, true}, "deg") * std::numbers::pi / 180.0;
-  crack.gear = c.optional_integer("gear", 1, max_gear).value_or(1) - 1;
+  stiffness::crack_table(max_gear).read(c, crack);
   c.finish();
   return crack;
 }

@@ -26,27 +26,6 @@ using lubricant::FrictionModel;
 // 64.7 kW; with 6.2053e8 the figures are 5.5 W and 0.44 kW. The rolling loss is reported
 // apart from the sliding loss so that either reading can be recovered by scaling.
 
-void MeshLossOptions::validate() const {
-  if (positions < 2 || positions > 1000000)
-    throw InputError(fmt::format("positions = {}: allowed range is [2, 1000000]", positions));
-  if (points_per_line < 1 || points_per_line > 100000)
-    throw InputError(fmt::format("points_per_line = {}: allowed range is [1, 100000]", points_per_line));
-  if (!(friction_coefficient >= 0.0 && friction_coefficient <= 0.5))
-    throw InputError(fmt::format("friction.mu = {}: allowed range is [0, 0.5]", friction_coefficient));
-  if (!(boundary_friction >= 0.07 && boundary_friction <= 0.15))
-    throw InputError(fmt::format("friction.mu_boundary = {}: allowed range is [0.07, 0.15] (seed 000: "
-                                 "measured boundary friction)", boundary_friction));
-  if (!(lubricant_factor > 0.0 && lubricant_factor <= 2.0))
-    throw InputError(fmt::format("friction.lubricant_factor = {}: allowed range is (0, 2]", lubricant_factor));
-  if (!(rolling_loss_constant >= 0.0 && rolling_loss_constant <= 1e11))
-    throw InputError(fmt::format("rolling_loss_constant = {}: allowed range is [0, 1e11] Pa", rolling_loss_constant));
-  if (friction_model == FrictionModel::ehl && !(eyring_stress > 0.0 && eyring_stress <= 1e9))
-    throw InputError(fmt::format("friction.eyring_stress_MPa = {}: required by friction.model = \"ehl\", allowed "
-                                 "range (0, 1000]", eyring_stress * 1e-6));
-  if (friction_model != FrictionModel::ehl && eyring_stress != 0.0)
-    throw InputError("friction.eyring_stress_MPa: applies to friction.model = \"ehl\" only");
-}
-
 namespace {
 
 ContactLoss& operator+=(ContactLoss& a, const ContactLoss& b) {
@@ -94,7 +73,7 @@ MeshLoss::MeshLoss(const geometry::GearPairGeometry& geometry, const model::Oper
   if (options_.friction_model == FrictionModel::iso14179) iso_mu_ = iso14179_coefficient();
   if (options_.friction_model == FrictionModel::ehl)
     ehl_friction_ = std::make_unique<EhlFriction>(ehl::LineContactData::from_gear_media(*media_.materials, *media_.lubricant),
-                                                  options_.eyring_stress);
+                                                  *options_.eyring_stress);
 }
 
 int MeshLoss::ehl_solves() const { return ehl_friction_ ? ehl_friction_->solves() : 0; }

@@ -18,6 +18,7 @@
 #include "geometry/load_sharing.h"
 #include "lubricant/friction_laws.h"
 #include "model/materials.h"
+#include "model/option_table.h"
 
 namespace gearbench::stiffness {
 class PairStiffness;
@@ -27,6 +28,9 @@ namespace gearbench::efficiency {
 
 class EhlFriction;
 
+/// Case keys of the mesh-loss solver: "friction" {"model", "mu", "mu_boundary",
+/// "lubricant_factor", "eyring_stress_MPa"}, "load_sharing", "rolling_loss_constant_Pa",
+/// "positions", "points_per_line" (the table; defaults are the initialisers here).
 struct MeshLossOptions {
   int positions = 200;            ///< mesh positions over one mesh period (the series)
   int points_per_line = 20;       ///< helical: midpoints along every contact line
@@ -35,7 +39,7 @@ struct MeshLossOptions {
   double friction_coefficient = 0.05;  ///< constant μ ("friction.mu")
   double boundary_friction = 0.1;      ///< μ_BL of the mixed law, seed 000: 0.07–0.15
   double lubricant_factor = 1.0;       ///< X_L of ISO/TR 14179-2 (mineral oil 1)
-  double eyring_stress = 0.0;          ///< τ0 [Pa] of the "ehl" law (required there)
+  std::optional<double> eyring_stress; ///< τ0 [Pa] of the "ehl" law (required there, refused elsewhere)
   /// Rolling loss of seed 004 eq. 9, P_r = C_r·h_min·ū·l·cos α_wt per contact [W]. Eq. 9
   /// prints 9·h·u_r·l·cos φ × 10⁻³ [kW] without units. Two readings (see rolling_loss_note
   /// in the .cpp): (a) h in µm, u_r in m/s, l in mm, literally as printed: C_r = 9e9 Pa;
@@ -47,7 +51,12 @@ struct MeshLossOptions {
   /// default, (a) is available as "rolling_loss_constant_Pa": 9e9.
   double rolling_loss_constant = 6.2053e8;
 
-  void validate() const;          ///< InputError naming the key
+  /// The keys, units, ranges and descriptions of these options, at a case's root.
+  static const model::OptionTable<MeshLossOptions>& table();
+  /// The "friction" section alone (the dynamics kind reads it too).
+  static const model::OptionTable<MeshLossOptions>& friction_table();
+  /// InputError naming the key, its value and the allowed range.
+  void validate() const { table().validate(*this); }
 };
 
 /// What one contact point (or contact-line element) contributes.

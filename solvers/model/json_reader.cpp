@@ -29,6 +29,11 @@ std::string Range::describe() const {
 
 std::string format_value(double v) { return fmt::format("{}", v); }
 
+std::string range_message(const std::string& key, double value, const Range& range, const std::string& unit) {
+  return fmt::format("{} = {}: allowed range is {}{}", key, format_value(value), range.describe(),
+                     unit.empty() ? "" : " " + unit);
+}
+
 namespace {
 
 /// Why a value was not kept: the subtype of the binary value (which JSON text never yields)
@@ -375,9 +380,7 @@ double ObjectReader::checked_number(const json& value, const std::string& full_k
   const double v = value.get<double>();
   if (!std::isfinite(v))
     throw InputError(fmt::format("{} = {}: must be finite", full_key, format_value(v)));
-  if (!range.contains(v))
-    throw InputError(fmt::format("{} = {}: allowed range is {}{}", full_key, format_value(v),
-                                 range.describe(), unit.empty() ? "" : " " + unit));
+  if (!range.contains(v)) throw InputError(range_message(full_key, v, range, unit));
   return v;
 }
 
@@ -414,6 +417,13 @@ int ObjectReader::integer(const std::string& key, int lo, int hi) {
 std::optional<int> ObjectReader::optional_integer(const std::string& key, int lo, int hi) {
   if (!has(key)) return std::nullopt;
   return integer(key, lo, hi);
+}
+
+bool ObjectReader::boolean(const std::string& key) {
+  const json& value = require(key);
+  if (!value.is_boolean())
+    throw InputError(fmt::format("{} = {}: must be true or false", key_path(key), shown_value(value)));
+  return value.get<bool>();
 }
 
 std::string ObjectReader::string(const std::string& key,

@@ -27,6 +27,10 @@ struct Range {
 /// Formats a number the way an error message shows it (shortest round-trip form).
 std::string format_value(double v);
 
+/// "key = value: allowed range is R unit": the one wording of a range error, for the reader
+/// and for every Options table's validate() (option_table.h).
+std::string range_message(const std::string& key, double value, const Range& range, const std::string& unit);
+
 /// Limits on what gearbench reads: deeper nesting or a larger file is refused as bad input
 /// before it can exhaust the stack or the memory.
 inline constexpr std::size_t max_json_depth = 64;
@@ -78,6 +82,7 @@ class ObjectReader {
                                         const std::string& unit = "");
   int integer(const std::string& key, int lo, int hi);
   std::optional<int> optional_integer(const std::string& key, int lo, int hi);
+  bool boolean(const std::string& key);
   std::string string(const std::string& key, const std::vector<std::string>& allowed = {});
   std::optional<std::string> optional_string(const std::string& key,
                                              const std::vector<std::string>& allowed = {});

@@ -11,19 +11,6 @@
 
 namespace gearbench::stiffness {
 
-void MeshStiffnessOptions::validate() const {
-  if (positions < 2 || positions > 100000)
-    throw InputError(fmt::format("positions = {}: allowed range is [2, 100000]", positions));
-  if (path_points < 2 || path_points > 100000)
-    throw InputError(fmt::format("path_points = {}: allowed range is [2, 100000]", path_points));
-  if (slices < 1 || slices > 10000)
-    throw InputError(fmt::format("slices = {}: allowed range is [1, 10000]", slices));
-  if (spline_nodes < 4 || spline_nodes > 1000000)
-    throw InputError(fmt::format("spline_nodes = {}: allowed range is [4, 1000000]", spline_nodes));
-  if (crack && (crack->gear < 0 || crack->gear > 1))
-    throw InputError(fmt::format("crack.gear = {}: allowed values are 1, 2", crack->gear + 1));
-}
-
 namespace {
 void reject_helical_crack(const geometry::GearPairGeometry& g, const MeshStiffnessOptions& o) {
   if (o.crack && g.base_helix_angle() > 0.0)
@@ -76,6 +63,9 @@ std::array<double, 2> MeshStiffness::bore_radii() const {
 MeshStiffnessResult MeshStiffness::solve() const {
   MeshStiffnessResult r;
   r.slices = geometry_.base_helix_angle() > 0.0 ? options_.slices : 1;
+  r.options_given = options_;
+  r.options_used = options_;
+  r.options_used.slices = r.slices;
   r.face_width_total = geometry_.pair().face_width * (geometry_.pair().herringbone ? 2.0 : 1.0);
   r.warnings = pair_.warnings();
   single_pair_curve(r);

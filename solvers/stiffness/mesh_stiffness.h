@@ -10,11 +10,17 @@
 #include <vector>
 
 #include "geometry/gear_pair_geometry.h"
+#include "model/option_table.h"
 #include "cubic_spline.h"
 #include "pair_stiffness.h"
 
 namespace gearbench::stiffness {
 
+/// The "crack" section of a case: {"type", "length_mm", "angle_deg", "gear"}; `max_gear` is
+/// 2 where either gear may carry the crack, 1 where only the pinion may.
+const model::OptionTable<GearCrack>& crack_table(int max_gear = 2);
+
+/// Case keys at the case's root (the table below); defaults are the initialisers here.
 struct MeshStiffnessOptions {
   BeamStart beam_start = BeamStart::improved;
   Fillet fillet = Fillet::trochoid;  ///< of the improved beam (docs/stiffness-model.md)
@@ -26,8 +32,10 @@ struct MeshStiffnessOptions {
   std::optional<std::array<double, 2>> bore_radius;  ///< r_int [m]; default r_f/2
   std::optional<GearCrack> crack;
 
-  /// Throws InputError naming the option key.
-  void validate() const;
+  /// The keys, units, ranges and descriptions of these options (case units).
+  static const model::OptionTable<MeshStiffnessOptions>& table();
+  /// Throws InputError naming the option key, its value and the allowed range.
+  void validate() const { table().validate(*this); }
 };
 
 struct MeshStiffnessResult {
@@ -46,6 +54,9 @@ struct MeshStiffnessResult {
   double face_width_total = 0.0;          ///< [m] (both halves of a herringbone pair)
   int slices = 1;
   std::vector<std::string> warnings;
+  /// The options as given to the solver and as it used them (Ceres' *_given/*_used): a spur
+  /// pair is one slice and needs no spline, a helical one spreads the spline over A..E.
+  MeshStiffnessOptions options_given, options_used;
 
   /// Mean mesh stiffness per face width [N/(mm·µm)].
   [[nodiscard]] double mean_per_face_width() const;
