@@ -117,6 +117,8 @@ json run_micropitting(const json& case_json) {
           {"material_factor_WW", mc.material_factor},
           {"reference_test_name", mc.test_name},
           {"reference_test_failure_load_stage", mc.failure_load_stage},
+          {"options_given", micropitting::MicropittingCase::table().to_json(mc)},
+          {"options_used", micropitting::MicropittingCase::table().to_json(mc.used())},
           {"gear", result_json(a.gear)},
           {"reference_test", result_json(a.reference_test)}};
 }

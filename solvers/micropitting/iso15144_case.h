@@ -24,6 +24,7 @@
 #include "micropitting/iso15144_micropitting.h"
 #include "model/case_reader.h"
 #include "model/json_reader.h"
+#include "model/option_table.h"
 
 namespace gearbench::micropitting {
 
@@ -32,7 +33,16 @@ struct MicropittingCase {
   micropitting::iso15144::Inputs test;
   double material_factor = 1.0;
   int failure_load_stage = 0;
-  std::string test_name;
+  std::string test_name = "reference test";
+  double test_pitch_line_speed = 0.0;  ///< v at the test pair's working pitch circle [m/s]
+  model::ThermalSolids solids;         ///< "solids" as given, for both the gear and the test
+
+  /// The keys of the "micropitting" section, their units, ranges and defaults (the member
+  /// initialisers of this struct and of iso15144::Inputs).
+  static const model::OptionTable<MicropittingCase>& table();
+  /// The section as the method uses it: an accuracy grade better than 7 counts as 7 in the
+  /// load sharing (ISO/TR 15144-1 (46)-(48)).
+  [[nodiscard]] MicropittingCase used() const;
 };
 
 /// Reads "micropitting" (required) with the case's "materials" and "operating" (required).

@@ -62,8 +62,10 @@ json merge_object_schemas(const std::vector<json>& parts, const std::string& des
   json properties = json::object();
   json required = json::array();
   for (const auto& p : parts) {
-    for (const auto& [key, value] : p.value("properties", json::object()).items()) properties[key] = value;
-    for (const auto& key : p.value("required", json::array()))
+    const json part_properties = p.value("properties", json::object());  // items() must not outlive it
+    const json part_required = p.value("required", json::array());
+    for (const auto& [key, value] : part_properties.items()) properties[key] = value;
+    for (const auto& key : part_required)
       if (std::find(required.begin(), required.end(), key) == required.end()) required.push_back(key);
   }
   out["properties"] = properties;
