@@ -8,6 +8,7 @@
 #include "gear_pair.h"
 #include "json_reader.h"
 #include "materials.h"
+#include "option_table.h"
 
 namespace gearbench::model {
 
@@ -15,6 +16,13 @@ namespace gearbench::model {
 /// racks too narrow for it (pressure angles above about 22°, outside ISO 53) the full-round
 /// tip radius, whose two rounds meet on the rack tooth's centre line.
 double default_root_radius_coef(double dedendum_coef, double normal_pressure_angle);
+
+/// The keys of the shared sections, one table each (option_table.h); the readers below and
+/// `gearbench schema` come from them.
+const OptionTable<GearPair>& gear_pair_table();
+const OptionTable<Material>& material_table();
+const OptionTable<OperatingPoint>& operating_table();
+const OptionTable<Lubricant>& lubricant_table();
 
 GearPair read_gear_pair(ObjectReader section);
 /// `materials`: one object (both gears) or an array of two.

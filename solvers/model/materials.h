@@ -8,7 +8,7 @@ namespace gearbench::model {
 struct Material {
   double youngs_modulus = 0.0;  ///< E [Pa]
   double poisson_ratio = 0.0;   ///< ν [-]
-  double density = 0.0;         ///< [kg/m³]
+  double density = 7850.0;      ///< [kg/m³]; steel unless a case says otherwise
 };
 
 /// E′ = 2/((1 − ν1²)/E1 + (1 − ν2²)/E2) [Pa], the plane-strain modulus of two bodies in
@@ -21,7 +21,7 @@ inline double reduced_modulus(const std::array<Material, 2>& m) {
 struct OperatingPoint {
   double pinion_speed = 0.0;         ///< ω1 [rad/s]
   double pinion_torque = 0.0;        ///< T1 [N·m]
-  double oil_temperature = 0.0;      ///< [K]
+  double oil_temperature = 313.15;   ///< [K]; 40 °C unless a case says otherwise
   std::array<double, 2> roughness_Ra{};  ///< arithmetic mean roughness per flank [m]
 };
 
