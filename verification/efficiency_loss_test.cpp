@@ -212,7 +212,7 @@ TEST(EfficiencySweep, OneParameterAtATime) {
   EXPECT_NE(rows[0].efficiency_mean, rows[1].efficiency_mean);
   EXPECT_NE(testing_support::input_error_of([&] {
               (void)efficiency::efficiency_sweep(d.pair, d.op, o, seed004_media(), {{}, {}, {5.0}});
-            }).find("sweep.pressure_angle_deg = 5"),
+            }).find("sweep.pressure_angle_deg[0] = 5: allowed range is (10, 40] deg"),
             std::string::npos);
 }
 

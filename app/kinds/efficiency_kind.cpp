@@ -21,28 +21,11 @@ namespace {
 
 using nlohmann::json;
 
-std::optional<efficiency::SweepSpec> read_sweep(model::ObjectReader& root, const json& case_json) {
+std::optional<efficiency::SweepSpec> read_sweep(model::ObjectReader& root) {
   if (!root.has("sweep")) return std::nullopt;
-  root.accept("sweep");
-  const json& section = case_json.at("sweep");
-  if (!section.is_object()) throw InputError("sweep: an object expected");
-  model::ObjectReader s(section, "sweep");
+  auto s = root.object("sweep");
   efficiency::SweepSpec spec;
-  const auto list = [&](const char* key) {
-    std::vector<double> v;
-    if (!s.has(key)) return v;
-    s.accept(key);
-    const json& values = section.at(key);
-    if (!values.is_array()) throw InputError(fmt::format("sweep.{}: a list of numbers expected", key));
-    for (const auto& x : values) {
-      if (!x.is_number()) throw InputError(fmt::format("sweep.{}: a list of numbers expected", key));
-      v.push_back(x.get<double>());
-    }
-    return v;
-  };
-  spec.torques_Nm = list("torque_Nm");
-  spec.speeds_rpm = list("speed_rpm");
-  spec.pressure_angles_deg = list("pressure_angle_deg");
+  efficiency::SweepSpec::table().read(s, spec);
   s.finish();
   spec.validate();
   return spec;
@@ -84,7 +67,7 @@ json run_efficiency(const json& case_json) {
   const auto gear_case = model::read_gear_case(root);
   if (!gear_case.operating) throw InputError("operating: missing required key (kind efficiency)");
   const auto options = read_mesh_loss_options(root);
-  const auto sweep = read_sweep(root, case_json);
+  const auto sweep = read_sweep(root);
   root.finish();
 
   const geometry::GearPairGeometry geometry(gear_case.gear_pair);

@@ -9,17 +9,23 @@
 
 namespace gearbench::efficiency {
 
-void SweepSpec::validate() const {
-  const auto check = [](const std::vector<double>& values, const char* key, double lo, double hi) {
-    for (const double v : values)
-      if (!(v > lo && v <= hi))
-        throw InputError(fmt::format("sweep.{} = {}: allowed range is ({}, {}]", key, v, lo, hi));
-  };
-  check(torques_Nm, "torque_Nm", 0.0, 1e9);
-  check(speeds_rpm, "speed_rpm", 0.0, 1e6);
-  check(pressure_angles_deg, "pressure_angle_deg", 10.0, 40.0);
-  if (torques_Nm.empty() && speeds_rpm.empty() && pressure_angles_deg.empty())
-    throw InputError("sweep: give at least one of torque_Nm, speed_rpm, pressure_angle_deg");
+const model::OptionTable<SweepSpec>& SweepSpec::table() {
+  static const auto t = [] {
+    model::OptionTable<SweepSpec> t;
+    t.number("torque_Nm", &SweepSpec::torques_Nm, model::Range{0.0, 1e9, true, false},
+             {.description = "pinion torques to run, one at a time", .unit = "N*m"});
+    t.number("speed_rpm", &SweepSpec::speeds_rpm, model::Range{0.0, 1e6, true, false},
+             {.description = "pinion speeds to run, one at a time", .unit = "rpm"});
+    t.number("pressure_angle_deg", &SweepSpec::pressure_angles_deg, model::Range{10.0, 40.0, true, false},
+             {.description = "normal pressure angles to run, one at a time", .unit = "deg"});
+    t.rule([](const SweepSpec& s, const std::string& prefix) {
+      if (s.torques_Nm.empty() && s.speeds_rpm.empty() && s.pressure_angles_deg.empty())
+        throw InputError(prefix.substr(0, prefix.size() - 1) +
+                         ": give at least one of torque_Nm, speed_rpm, pressure_angle_deg");
+    });
+    return t;
+  }();
+  return t;
 }
 
 namespace {

@@ -10,11 +10,14 @@
 
 namespace gearbench::efficiency {
 
+/// The "sweep" section of an efficiency case: values in the case's units, as the operating
+/// point and the gear pair take them.
 struct SweepSpec {
   std::vector<double> torques_Nm;            ///< pinion torque values
   std::vector<double> speeds_rpm;            ///< pinion speed values
   std::vector<double> pressure_angles_deg;   ///< normal pressure angle values
-  void validate() const;                     ///< InputError naming sweep.<key>
+  static const model::OptionTable<SweepSpec>& table();
+  void validate() const { table().validate(*this, "sweep."); }  ///< InputError naming sweep.<key>
 };
 
 struct SweepRow {

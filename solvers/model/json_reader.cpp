@@ -477,6 +477,17 @@ std::array<int, 2> ObjectReader::integer_pair(const std::string& key, int lo, in
   return out;
 }
 
+std::vector<double> ObjectReader::number_list(const std::string& key, const Range& range, const std::string& unit) {
+  const json& value = require(key);
+  if (!value.is_array())
+    throw InputError(fmt::format("{} = {}: must be a list of numbers, got {}", key_path(key), shown_value(value),
+                                 type_name(value)));
+  std::vector<double> out;
+  for (std::size_t i = 0; i < value.size(); ++i)
+    out.push_back(checked_number(value[i], fmt::format("{}[{}]", key_path(key), i), range, unit));
+  return out;
+}
+
 ObjectReader ObjectReader::object(const std::string& key) {
   return ObjectReader(require(key), key_path(key));
 }

@@ -94,6 +94,8 @@ class ObjectReader {
                                                             const Range& range,
                                                             const std::string& unit = "");
   std::array<int, 2> integer_pair(const std::string& key, int lo, int hi);
+  /// An array of numbers of any length (a sweep's values).
+  std::vector<double> number_list(const std::string& key, const Range& range, const std::string& unit = "");
 
   /// A nested object, read by its own reader.
   ObjectReader object(const std::string& key);

@@ -47,7 +47,8 @@ json value_schema(const KeyInfo& info) {
 
 json key_schema(const KeyInfo& info, const json& default_value) {
   json s = value_schema(info);
-  if (info.pair) s = {{"type", "array"}, {"items", s}, {"minItems", 2}, {"maxItems", 2}};
+  if (info.shape == Shape::pair) s = {{"type", "array"}, {"items", s}, {"minItems", 2}, {"maxItems", 2}};
+  if (info.shape == Shape::list) s = {{"type", "array"}, {"items", s}};
   std::string description = info.spec.description;
   if (!info.spec.default_text.empty()) description += fmt::format(" Default: {}.", info.spec.default_text);
   if (!description.empty()) s["description"] = description;

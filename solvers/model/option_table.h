@@ -32,10 +32,13 @@ struct KeySpec {
 enum class KeyType { number, integer, boolean, choice, text, section, external };
 
 /// The part of a key that documentation and the schema see.
+/// One value, [gear 1, gear 2], or a list of any length.
+enum class Shape { scalar, pair, list };
+
 struct KeyInfo {
   std::string key;
   KeyType type = KeyType::number;
-  bool pair = false;               ///< [gear 1, gear 2]
+  Shape shape = Shape::scalar;
   std::optional<Range> range;      ///< numbers and integers (case units)
   std::vector<std::string> choices;
   KeySpec spec;
@@ -54,6 +57,8 @@ template <class T> struct is_optional : std::false_type {};
 template <class T> struct is_optional<std::optional<T>> : std::true_type {};
 template <class T> struct is_pair : std::false_type {};
 template <class T> struct is_pair<std::array<T, 2>> : std::true_type {};
+template <class T> struct is_list : std::false_type {};
+template <class T> struct is_list<std::vector<T>> : std::true_type {};
 template <class T> T strip_optional(const std::optional<T>&);
 template <class T> T strip_optional(const T&);
 }  // namespace detail
@@ -67,7 +72,9 @@ class OptionTable {
     using M = member_t<Access>;
     using V = decltype(detail::strip_optional(std::declval<M>()));
     constexpr bool pair = detail::is_pair<V>::value;
-    KeyInfo info{std::move(key), KeyType::number, pair, range, {}, std::move(spec), {}};
+    constexpr bool list = detail::is_list<V>::value;
+    KeyInfo info{std::move(key), KeyType::number, pair ? Shape::pair : list ? Shape::list : Shape::scalar, range, {},
+                 std::move(spec), {}};
     const double scale = info.spec.scale, offset = info.spec.offset;
     const auto to_case = [scale, offset](double si) { return (si - offset) / scale; };
     const auto to_si = [scale, offset](double v) { return v * scale + offset; };
@@ -85,6 +92,10 @@ class OptionTable {
       if constexpr (pair) {
         const auto v = r.number_pair(info.key, *info.range, info.spec.unit);
         std::invoke(access, o) = V{to_si(v[0]), to_si(v[1])};
+      } else if constexpr (list) {
+        auto v = r.number_list(info.key, *info.range, info.spec.unit);
+        for (auto& x : v) x = to_si(x);
+        std::invoke(access, o) = std::move(v);
       } else {
         std::invoke(access, o) = to_si(r.number(info.key, *info.range, info.spec.unit));
       }
@@ -106,7 +117,8 @@ class OptionTable {
     using M = member_t<Access>;
     static_assert(std::is_same_v<M, int> || std::is_same_v<M, std::array<int, 2>>);
     constexpr bool pair = detail::is_pair<M>::value;
-    KeyInfo info{std::move(key), KeyType::integer, pair, Range::closed(lo, hi), {}, std::move(spec), {}};
+    KeyInfo info{std::move(key), KeyType::integer, pair ? Shape::pair : Shape::scalar, Range::closed(lo, hi), {},
+                 std::move(spec), {}};
     const int offset = static_cast<int>(info.spec.offset);
     Entry e{info};
     e.get = [access, offset](const O& o) -> nlohmann::json {
@@ -136,7 +148,7 @@ class OptionTable {
   /// a bool, or the string itself).
   template <class Access, class V>
   OptionTable& choice(std::string key, Access access, std::vector<std::pair<std::string, V>> names, KeySpec spec) {
-    KeyInfo info{std::move(key), KeyType::choice, false, std::nullopt, {}, std::move(spec), {}};
+    KeyInfo info{std::move(key), KeyType::choice, Shape::scalar, std::nullopt, {}, std::move(spec), {}};
     for (const auto& n : names) info.choices.push_back(n.first);
     Entry e{info};
     e.get = [access, names](const O& o) -> nlohmann::json {
@@ -164,7 +176,7 @@ class OptionTable {
 
   template <class Access>
   OptionTable& boolean(std::string key, Access access, KeySpec spec) {
-    KeyInfo info{std::move(key), KeyType::boolean, false, std::nullopt, {}, std::move(spec), {}};
+    KeyInfo info{std::move(key), KeyType::boolean, Shape::scalar, std::nullopt, {}, std::move(spec), {}};
     Entry e{info};
     e.get = [access](const O& o) -> nlohmann::json { return bool(std::invoke(access, o)); };
     e.read = [access, key = info.key](ObjectReader& r, O& o) { std::invoke(access, o) = r.boolean(key); };
@@ -175,7 +187,7 @@ class OptionTable {
   /// Free text (a name shown in the output).
   template <class Access>
   OptionTable& text(std::string key, Access access, KeySpec spec) {
-    KeyInfo info{std::move(key), KeyType::text, false, std::nullopt, {}, std::move(spec), {}};
+    KeyInfo info{std::move(key), KeyType::text, Shape::scalar, std::nullopt, {}, std::move(spec), {}};
     Entry e{info};
     e.get = [access](const O& o) -> nlohmann::json { return std::invoke(access, o); };
     e.read = [access, key = info.key](ObjectReader& r, O& o) { std::invoke(access, o) = r.string(key); };
@@ -185,11 +197,15 @@ class OptionTable {
 
   /// A nested object read by its own table into the member `access` returns (a struct, or
   /// an optional one that the section's presence sets).
+  /// `schema_of` widens the section's schema where the section has another form (an oil
+  /// named from the catalogue, resolved before the table reads it).
   template <class Access, class S>
-  OptionTable& section(std::string key, Access access, const OptionTable<S>& table, KeySpec spec) {
+  OptionTable& section(std::string key, Access access, const OptionTable<S>& table, KeySpec spec,
+                       const std::function<nlohmann::json(nlohmann::json)>& schema_of = {}) {
     using M = member_t<Access>;
-    KeyInfo info{std::move(key), KeyType::section, false, std::nullopt, {}, std::move(spec), {}};
+    KeyInfo info{std::move(key), KeyType::section, Shape::scalar, std::nullopt, {}, std::move(spec), {}};
     info.schema = table.schema(info.spec.description);
+    if (schema_of) info.schema = schema_of(std::move(info.schema));
     Entry e{info};
     e.get = [access, &table](const O& o) -> nlohmann::json {
       const M& m = std::invoke(access, o);
@@ -218,7 +234,7 @@ class OptionTable {
   /// A key that after_read() reads by hand (a section with a reader of its own); `schema`
   /// is its value's schema, or an object schema that says what it does not check.
   OptionTable& external(std::string key, nlohmann::json schema, KeySpec spec) {
-    KeyInfo info{std::move(key), KeyType::external, false, std::nullopt, {}, std::move(spec), std::move(schema)};
+    KeyInfo info{std::move(key), KeyType::external, Shape::scalar, std::nullopt, {}, std::move(spec), std::move(schema)};
     entries_.push_back(Entry{info});
     return *this;
   }
@@ -295,9 +311,11 @@ class OptionTable {
 
   template <class F>
   static nlohmann::json value_json(double v, const F& to_case) { return to_case(v); }
-  template <class F>
-  static nlohmann::json value_json(const std::array<double, 2>& v, const F& to_case) {
-    return nlohmann::json::array({to_case(v[0]), to_case(v[1])});
+  template <class Values, class F>
+  static nlohmann::json value_json(const Values& values, const F& to_case) {
+    auto out = nlohmann::json::array();
+    for (const double v : values) out.push_back(to_case(v));
+    return out;
   }
 
   /// The range is checked in SI, its bounds converted as the reader converts a value, so a
@@ -309,10 +327,9 @@ class OptionTable {
     if (!si_range.contains(si))
       throw_range(key, (si - info.spec.offset) / (info.type == KeyType::integer ? 1.0 : info.spec.scale), info);
   }
-  template <class F>
-  static void check_range(const std::array<double, 2>& si, const std::string& key, const KeyInfo& info,
-                          const F& to_si) {
-    for (std::size_t i = 0; i < 2; ++i) check_range(si[i], key + "[" + std::to_string(i) + "]", info, to_si);
+  template <class Values, class F>
+  static void check_range(const Values& si, const std::string& key, const KeyInfo& info, const F& to_si) {
+    for (std::size_t i = 0; i < si.size(); ++i) check_range(si[i], key + "[" + std::to_string(i) + "]", info, to_si);
   }
   [[noreturn]] static void throw_range(const std::string& key, double value, const KeyInfo& info);
   [[noreturn]] static void throw_not_a_choice(const std::string& key, const KeyInfo& info);
