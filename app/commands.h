@@ -79,6 +79,10 @@ int sweep_command(const std::string& sweep_path, const std::string& out_dir, boo
 /// at T with their sources.
 int lubricants_command(const std::string& name, std::optional<double> temperature_C);
 
+/// `gearbench schema [KIND]`: the JSON Schema of a kind's case files, or of every kind;
+/// InputError for a kind that has none yet.
+int schema_command(const std::string& kind);
+
 /// Where `bench --record` writes and `report perf` reads: the checkout's reports/perf.
 std::string default_perf_dir();
 

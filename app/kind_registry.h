@@ -5,6 +5,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace gearbench::app {
 
@@ -13,6 +14,10 @@ struct KindSpec {
   std::string summary;
   /// Validates the case (InputError on bad input) and returns the result as JSON.
   std::function<nlohmann::json(const nlohmann::json& case_json)> run;
+  /// The object schemas of the case's keys beside "kind" and "description", made from the
+  /// tables its reader reads (case_schema.h); empty for a kind whose keys are still read by
+  /// hand, which then has no schema rather than one that could be wrong.
+  std::function<std::vector<nlohmann::json>()> schema_parts = {};
 };
 
 class KindRegistry {

@@ -130,6 +130,10 @@ int main(int argc, char** argv) {
   lubricants->add_option("NAME", oil_name, "oil name, e.g. \"ISO VG 320 mineral\"");
   auto* oil_temperature = lubricants->add_option("--temperature-C", oil_temperature_C, "temperature [degC]");
 
+  std::string schema_kind;
+  auto* schema = cli.add_subcommand("schema", "print the JSON Schema of a kind's case files (all kinds without KIND)");
+  schema->add_option("KIND", schema_kind, "case kind, e.g. stiffness");
+
   install_interrupt_handler();
   try {
     cli.parse(argc, argv);
@@ -151,6 +155,7 @@ int main(int argc, char** argv) {
       if (repetitions_option->count()) range.repetitions = repetitions;
       return bench_range_command(range);
     }
+    if (*schema) return schema_command(schema_kind);
     if (*lubricants)
       return lubricants_command(oil_name, oil_temperature->count() ? std::optional(oil_temperature_C) : std::nullopt);
     if (*bench) {

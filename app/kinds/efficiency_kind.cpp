@@ -12,6 +12,7 @@
 #include "efficiency/efficiency_sweep.h"
 #include "efficiency/mesh_loss.h"
 #include "efficiency_sections.h"
+#include "case_schema.h"
 #include "kind_registry.h"
 #include "model/case_reader.h"
 #include "model/errors.h"
@@ -119,8 +120,14 @@ json run_efficiency(const json& case_json) {
   return result;
 }
 
+std::vector<json> efficiency_schema() {
+  return {gear_case_schema({"operating"}), efficiency::MeshLossOptions::table().schema(),
+          section_part("sweep", efficiency::SweepSpec::table().schema("one-parameter sweeps about the operating point"),
+                       false)};
+}
+
 const RegisterKind efficiency_kind({"efficiency", "mesh power loss and efficiency over a mesh period",
-                                    run_efficiency});
+                                    run_efficiency, efficiency_schema});
 
 }  // namespace
 }  // namespace gearbench::app

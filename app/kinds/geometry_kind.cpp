@@ -5,6 +5,7 @@
 
 #include "geometry/gear_pair_geometry.h"
 #include "geometry/load_sharing.h"
+#include "case_schema.h"
 #include "kind_registry.h"
 #include "model/case_reader.h"
 
@@ -22,6 +23,20 @@ json path_json(const geometry::PathOfContact& p) {
           {"B", p.B * to_mm},  {"C", p.C * to_mm},   {"D", p.D * to_mm}, {"DE", p.DE * to_mm},
           {"E", p.E * to_mm}};
 }
+
+/// What the kind prints beyond the geometry itself: the resolution of the profiles.
+struct GeometryOutput {
+  int profile_points = 51;
+  static const model::OptionTable<GeometryOutput>& table() {
+    static const auto t = [] {
+      model::OptionTable<GeometryOutput> t;
+      t.integer("profile_points", &GeometryOutput::profile_points, 3, 100001,
+                {.description = "points of the profiles along the path of contact (and along each contact line)"});
+      return t;
+    }();
+    return t;
+  }
+};
 
 json profile_json(const geometry::GearPairGeometry& g, int points, double pinion_speed,
                   bool with_speeds) {
@@ -70,7 +85,9 @@ json run_geometry(const json& case_json) {
   root.string("kind");
   root.optional_string("description");
   const auto gear_case = model::read_gear_case(root);
-  const int points = root.optional_integer("profile_points", 3, 100001).value_or(51);
+  GeometryOutput output;
+  GeometryOutput::table().read(root, output);
+  const int points = output.profile_points;
   root.finish();
 
   const geometry::GearPairGeometry g(gear_case.gear_pair);
@@ -119,7 +136,9 @@ json run_geometry(const json& case_json) {
 
 const RegisterKind geometry_kind({"geometry",
                                   "involute geometry, path of contact, curvature and sliding",
-                                  run_geometry});
+                                  run_geometry, [] {
+                                    return std::vector<json>{gear_case_schema({}), GeometryOutput::table().schema()};
+                                  }});
 
 }  // namespace
 }  // namespace gearbench::app

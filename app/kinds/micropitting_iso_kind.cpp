@@ -5,6 +5,7 @@
 
 #include "geometry/gear_pair_geometry.h"
 #include "micropitting/iso15144_case.h"
+#include "case_schema.h"
 #include "kind_registry.h"
 #include "model/case_reader.h"
 #include "model/errors.h"
@@ -123,9 +124,17 @@ json run_micropitting(const json& case_json) {
           {"reference_test", result_json(a.reference_test)}};
 }
 
+std::vector<json> micropitting_schema() {
+  return {gear_case_schema({"materials", "operating"}),
+          section_part("micropitting",
+                       micropitting::MicropittingCase::table().schema("what ISO/TR 15144-1 method B needs beyond the "
+                                                                      "pair, materials and operating point"),
+                       true)};
+}
+
 const RegisterKind micropitting_kind({"micropitting_iso",
                                       "ISO/TR 15144-1 method B: local film, flash temperature, S_lambda",
-                                      run_micropitting});
+                                      run_micropitting, micropitting_schema});
 
 }  // namespace
 }  // namespace gearbench::app

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "closed_form/iso6336_stiffness.h"
+#include "case_schema.h"
 #include "kind_registry.h"
 #include "model/case_reader.h"
 #include "model/errors.h"
@@ -67,8 +68,12 @@ json run_stiffness(const json& case_json) {
   };
 }
 
+std::vector<json> stiffness_schema() {
+  return {gear_case_schema({"materials"}), stiffness::MeshStiffnessOptions::table().schema()};
+}
+
 const RegisterKind stiffness_kind({"stiffness", "energy-method mesh stiffness over a mesh cycle",
-                                   run_stiffness});
+                                   run_stiffness, stiffness_schema});
 
 }  // namespace
 }  // namespace gearbench::app

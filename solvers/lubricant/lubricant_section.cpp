@@ -1,5 +1,7 @@
 #include "lubricant_section.h"
 
+#include <map>
+
 #include <cmath>
 #include <fmt/format.h>
 #include <functional>
@@ -171,6 +173,27 @@ void follow_roelands_z(const json& section, json& out, json& echo) {
 }
 
 }  // namespace
+
+json named_or_explicit_schema(json explicit_schema) {
+  json named = {{"type", "object"},
+                {"description", "an oil named from the catalogue (gearbench lubricants), by name or by grade and base; "
+                                "explicit keys beside them override the catalogue's figures"},
+                {"properties", explicit_schema.value("properties", json::object())},
+                {"anyOf", json::array({{{"required", {"name"}}}, {{"required", {"grade", "base"}}}})},
+                {"additionalProperties", false}};
+  const std::map<std::string, json> naming = {
+      {"name", {{"type", "string"}, {"description", "an oil of the catalogue"}}},
+      {"grade", {{"type", "integer"}, {"minimum", 1}, {"maximum", 100000}, {"description", "ISO VG grade"}}},
+      {"base", {{"type", "string"}, {"enum", {"mineral", "pao", "ester", "pag"}}, {"description", "base oil of the grade"}}},
+      {"viscosity_index", {{"type", "number"}, {"description", "nu100 of the grade by ASTM D2270 / ISO 2909"}}},
+      {"temperature_C", {{"type", "number"}, {"minimum", -273.15}, {"unit", "degC"},
+                         {"description", "temperature to resolve at, where the case has none of its own"}}}};
+  for (const char* key : library_keys) named["properties"][key] = naming.at(key);
+  const std::string description = explicit_schema.value("description", "");
+  json out = {{"anyOf", json::array({std::move(explicit_schema), std::move(named)})}};
+  if (!description.empty()) out["description"] = description;
+  return out;
+}
 
 bool names_oil(const json& section) {
   return section.is_object() && (section.contains("name") || section.contains("grade"));

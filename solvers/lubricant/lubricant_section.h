@@ -32,6 +32,10 @@ struct ResolvedSection {
 /// True when the section names an oil ("name" or "grade").
 bool names_oil(const nlohmann::json& section);
 
+/// The schema of a section that may name an oil: either the explicit form (`explicit_schema`,
+/// an object schema) or the naming keys with any explicit key beside them as an override.
+nlohmann::json named_or_explicit_schema(nlohmann::json explicit_schema);
+
 /// Resolves a section that names an oil. `path` is its key path ("lubricant"); `temperature`
 /// the case's own (operating or inlet), if it has one — "temperature_C" in the section is the
 /// alternative, not both. InputError (naming the key, the value and what is allowed) for an

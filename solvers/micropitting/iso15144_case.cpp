@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <numbers>
 
+#include "lubricant/lubricant_section.h"
 #include "model/errors.h"
 
 namespace gearbench::micropitting {
@@ -63,7 +64,7 @@ model::OptionTable<MicropittingCase> make_test_table() {
   t.text("name", &MicropittingCase::test_name, {.description = "the test's name, shown in the output"});
   t.integer("failure_load_stage", &MicropittingCase::failure_load_stage, 1, 14,
             {.description = "FZG load stage at which the oil failed the test", .required = true});
-  t.external("gear_pair", {{"type", "object"}, {"description", "the test gear pair, as the case's gear_pair, with center_distance_mm"}},
+  t.external("gear_pair", model::gear_pair_table().schema("the test gear pair, with center_distance_mm"),
              {.required = true});
   t.number("pinion_torque_Nm", [](auto& c) -> auto& { return c.test.pinion_torque; }, Range::positive(1e7),
            {.description = "pinion torque at the failure load stage", .unit = "N*m", .required = true});
@@ -111,7 +112,8 @@ model::OptionTable<MicropittingCase> make_table() {
   static const auto solids = make_solids_table();
   static const auto test = make_test_table();
   t.section("oil", [](auto& c) -> auto& { return c.gear.oil; }, oil,
-            {.description = "the oil, explicit or named from the catalogue (gearbench lubricants)", .required = true});
+            {.description = "the oil, explicit or named from the catalogue (gearbench lubricants)", .required = true},
+            lubricant::named_or_explicit_schema);
   t.section("solids", &MicropittingCase::solids, solids,
             {.description = "thermal data of the gear bodies", .required = true});
   t.section("reference_test", [](auto& c) -> auto& { return c; }, test,

@@ -21,9 +21,10 @@ void throw_option_choice(const std::string& key, const KeyInfo& info) {
 namespace {
 
 /// minimum/maximum, or their exclusive forms for an open end; no upper bound for "> lo".
-void add_bounds(json& s, const Range& r) {
-  s[r.lo_open ? "exclusiveMinimum" : "minimum"] = r.lo;
-  if (r.hi < 1e299) s[r.hi_open ? "exclusiveMaximum" : "maximum"] = r.hi;
+void add_bounds(json& s, const Range& r, bool integer) {
+  const auto bound = [integer](double v) { return integer ? json(static_cast<long long>(v)) : json(v); };
+  s[r.lo_open ? "exclusiveMinimum" : "minimum"] = bound(r.lo);
+  if (r.hi < 1e299) s[r.hi_open ? "exclusiveMaximum" : "maximum"] = bound(r.hi);
 }
 
 json value_schema(const KeyInfo& info) {
@@ -31,7 +32,7 @@ json value_schema(const KeyInfo& info) {
     case KeyType::number:
     case KeyType::integer: {
       json s = {{"type", info.type == KeyType::number ? "number" : "integer"}};
-      add_bounds(s, *info.range);
+      add_bounds(s, *info.range, info.type == KeyType::integer);
       return s;
     }
     case KeyType::boolean: return {{"type", "boolean"}};
@@ -50,7 +51,8 @@ json key_schema(const KeyInfo& info, const json& default_value) {
   if (info.shape == Shape::pair) s = {{"type", "array"}, {"items", s}, {"minItems", 2}, {"maxItems", 2}};
   if (info.shape == Shape::list) s = {{"type", "array"}, {"items", s}};
   std::string description = info.spec.description;
-  if (!info.spec.default_text.empty()) description += fmt::format(" Default: {}.", info.spec.default_text);
+  if (!info.spec.default_text.empty())
+    description += fmt::format("{}default: {}", description.empty() ? "" : "; ", info.spec.default_text);
   if (!description.empty()) s["description"] = description;
   if (!info.spec.unit.empty()) s["unit"] = info.spec.unit;
   if (!default_value.is_null()) s["default"] = default_value;

@@ -1,0 +1,81 @@
+#include "case_schema.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "lubricant/lubricant_section.h"
+#include "model/case_reader.h"
+
+namespace gearbench::app {
+
+using nlohmann::json;
+
+namespace {
+constexpr const char* draft = "https://json-schema.org/draft/2020-12/schema";
+}  // namespace
+
+json section_part(const std::string& key, json section_schema, bool required) {
+  json part = {{"properties", {{key, std::move(section_schema)}}}};
+  if (required) part["required"] = {key};
+  return part;
+}
+
+json gear_case_schema(const std::vector<std::string>& required) {
+  const json material = model::material_table().schema("the material of both gears");
+  const json materials = {
+      {"description", "one material for both gears, or [pinion, wheel]"},
+      {"oneOf", json::array({material, {{"type", "array"}, {"items", material}, {"minItems", 2}, {"maxItems", 2}}})}};
+  const json properties = {
+      {"gear_pair", model::gear_pair_table().schema("the gear pair (ISO 21771 notation; index 0 the pinion)")},
+      {"materials", materials},
+      {"operating", model::operating_table().schema("the operating point")},
+      {"lubricant", lubricant::named_or_explicit_schema(
+                        model::lubricant_table().schema("the lubricant at the oil temperature"))}};
+  json needed = json::array({"gear_pair"});
+  for (const auto& key : required) needed.push_back(key);
+  return {{"properties", properties}, {"required", needed}};
+}
+
+std::optional<json> kind_schema(const KindSpec& kind) {
+  if (!kind.schema_parts) return std::nullopt;
+  std::vector<json> parts = {{{"properties",
+                               {{"kind", {{"const", kind.name}}},
+                                {"description", {{"type", "string"}, {"description", "free text about the case"}}}}},
+                              {"required", {"kind"}}}};
+  for (auto& part : kind.schema_parts()) parts.push_back(std::move(part));
+  json schema = model::merge_object_schemas(parts, kind.summary);
+  schema["$schema"] = draft;
+  schema["title"] = fmt::format("gearbench case, kind {}", kind.name);
+  return schema;
+}
+
+json all_kinds_schema() {
+  json names = json::array(), chosen = json::array(), defs = json::object();
+  std::vector<std::string> without;
+  for (const auto& [name, kind] : KindRegistry::instance().kinds()) {
+    names.push_back(name);
+    auto schema = kind_schema(kind);
+    if (!schema) {
+      without.push_back(name);
+      continue;
+    }
+    schema->erase("$schema");
+    defs[name] = std::move(*schema);
+    chosen.push_back({{"if", {{"properties", {{"kind", {{"const", name}}}}}, {"required", {"kind"}}}},
+                      {"then", {{"$ref", "#/$defs/" + name}}}});
+  }
+  json out = {{"$schema", draft},
+              {"title", "gearbench case"},
+              {"type", "object"},
+              {"properties", {{"kind", {{"enum", names}, {"description", "picks the solver"}}}}},
+              {"required", {"kind"}},
+              {"allOf", chosen},
+              {"$defs", defs}};
+  if (!without.empty())
+    out["$comment"] = fmt::format("no schema yet (keys read by hand, not from a table), so only \"kind\" is checked "
+                                  "for: {}",
+                                  fmt::join(without, ", "));
+  return out;
+}
+
+}  // namespace gearbench::app

@@ -1,0 +1,189 @@
+// `gearbench schema` (issue 21): every key of every case file in cases/ whose kind has a
+// schema is held against that schema, so a key the tables do not declare (or a value outside
+// a declared range) fails here; a kind without a table says so instead of printing a schema.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "support/cli_support.h"
+
+namespace {
+
+using gearbench::testing_support::run_gearbench;
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+/// The part of JSON Schema 2020-12 that `gearbench schema` writes: type, properties,
+/// required, additionalProperties false, items, min/maxItems, enum, const, the four bounds,
+/// anyOf/oneOf (one branch must hold), allOf with if/then, and $ref into $defs. Returns what does not hold.
+class SchemaCheck {
+ public:
+  explicit SchemaCheck(json root) : root_(std::move(root)) {}
+
+  std::vector<std::string> errors(const json& value) const {
+    std::vector<std::string> out;
+    check(value, root_, "case", out);
+    return out;
+  }
+
+ private:
+  void check(const json& v, const json& s, const std::string& at, std::vector<std::string>& out) const {
+    if (s.contains("$ref")) return check(v, root_["$defs"][s["$ref"].get<std::string>().substr(8)], at, out);
+    for (const char* any : {"anyOf", "oneOf"})
+      if (s.contains(any)) {
+        const bool one_holds = std::any_of(s[any].begin(), s[any].end(), [&](const json& branch) {
+          std::vector<std::string> e;
+          check(v, branch, at, e);
+          return e.empty();
+        });
+        if (!one_holds) out.push_back(at + ": matches none of " + any);
+      }
+    for (const auto& part : s.value("allOf", json::array())) {
+      std::vector<std::string> condition;
+      if (part.contains("if")) check(v, part["if"], at, condition);
+      if (condition.empty()) check(v, part.contains("then") ? part["then"] : part, at, out);
+    }
+    if (s.contains("type") && !has_type(v, s["type"].get<std::string>()))
+      return out.push_back(at + ": not of type " + s["type"].get<std::string>());
+    if (s.contains("enum") && std::find(s["enum"].begin(), s["enum"].end(), v) == s["enum"].end())
+      out.push_back(at + " = " + v.dump() + ": not in enum");
+    if (s.contains("const") && v != s["const"]) out.push_back(at + " = " + v.dump() + ": not the const");
+    if (v.is_number()) bounds(v.get<double>(), s, at, out);
+    if (v.is_object()) object(v, s, at, out);
+    if (v.is_array()) {
+      if (s.contains("minItems") && v.size() < s["minItems"].get<std::size_t>()) out.push_back(at + ": too few items");
+      if (s.contains("maxItems") && v.size() > s["maxItems"].get<std::size_t>()) out.push_back(at + ": too many items");
+      if (s.contains("items"))
+        for (std::size_t i = 0; i < v.size(); ++i) check(v[i], s["items"], at + "[" + std::to_string(i) + "]", out);
+    }
+  }
+
+  static bool has_type(const json& v, const std::string& type) {
+    if (type == "object") return v.is_object();
+    if (type == "array") return v.is_array();
+    if (type == "number") return v.is_number();
+    if (type == "integer") return v.is_number_integer();
+    if (type == "string") return v.is_string();
+    if (type == "boolean") return v.is_boolean();
+    return false;
+  }
+
+  static void bounds(double x, const json& s, const std::string& at, std::vector<std::string>& out) {
+    if ((s.contains("minimum") && x < s["minimum"].get<double>()) ||
+        (s.contains("maximum") && x > s["maximum"].get<double>()) ||
+        (s.contains("exclusiveMinimum") && x <= s["exclusiveMinimum"].get<double>()) ||
+        (s.contains("exclusiveMaximum") && x >= s["exclusiveMaximum"].get<double>()))
+      out.push_back(at + " = " + json(x).dump() + ": out of bounds");
+  }
+
+  void object(const json& v, const json& s, const std::string& at, std::vector<std::string>& out) const {
+    const json properties = s.value("properties", json::object());
+    for (const auto& key : s.value("required", json::array()))
+      if (!v.contains(key)) out.push_back(at + "." + key.get<std::string>() + ": required, missing");
+    for (const auto& [key, value] : v.items()) {
+      if (properties.contains(key)) check(value, properties[key], at + "." + key, out);
+      else if (s.value("additionalProperties", true) == false) out.push_back(at + "." + key + ": unknown key");
+    }
+  }
+
+  json root_;
+};
+
+json read_case(const fs::path& path) {
+  std::ifstream in(path);
+  return json::parse(in);
+}
+
+/// The case files of cases/ whose kind has a schema, with that schema.
+struct SchemaCase {
+  fs::path path;
+  json value;
+  json schema;
+};
+
+std::vector<SchemaCase> cases_with_schema() {
+  std::vector<SchemaCase> out;
+  for (const auto& entry : fs::directory_iterator(GEARBENCH_SOURCE_DIR "/cases")) {
+    if (entry.path().extension() != ".json") continue;
+    auto value = read_case(entry.path());
+    const auto o = run_gearbench("schema " + value["kind"].get<std::string>());
+    if (o.exit_code == 2 && o.err.find("has no schema yet") != std::string::npos) continue;
+    EXPECT_EQ(o.exit_code, 0) << entry.path() << ": " << o.err;
+    out.push_back({entry.path(), std::move(value), json::parse(o.out)});
+  }
+  return out;
+}
+
+TEST(Schema, EveryKeyOfEveryCaseIsInItsKindsSchema) {
+  const auto cases = cases_with_schema();
+  // The four kinds with tables have 13 case files among them today; fewer means the test
+  // checks less than it claims (a kind lost its schema, or the cases moved).
+  EXPECT_GE(cases.size(), 13u);
+  for (const auto& c : cases)
+    for (const auto& e : SchemaCheck(c.schema).errors(c.value)) ADD_FAILURE() << c.path << ": " << e;
+}
+
+// The check above must be able to fail: an unknown key at the root and in every section
+// that refuses one, and a value outside its range, are each reported.
+TEST(Schema, AnUnknownKeyOrAValueOutOfRangeFailsTheCheck) {
+  const auto cases = cases_with_schema();
+  ASSERT_FALSE(cases.empty());
+  for (const auto& c : cases) {
+    const SchemaCheck check(c.schema);
+    auto extra = c.value;
+    extra["not_a_key"] = 1;
+    EXPECT_EQ(check.errors(extra).size(), 1u) << c.path;
+    for (const auto& [key, section] : c.value.items()) {
+      if (!section.is_object() || section.contains("name") || section.contains("grade")) continue;
+      auto nested = c.value;
+      nested[key]["not_a_key"] = 1;
+      EXPECT_FALSE(check.errors(nested).empty()) << c.path << ": " << key << ".not_a_key passed";
+    }
+    auto out_of_range = c.value;
+    out_of_range["gear_pair"]["teeth"] = json::array({4, 30});
+    EXPECT_FALSE(check.errors(out_of_range).empty()) << c.path;
+  }
+}
+
+// A default in the schema is the one the solver gets: the stiffness case gives no
+// "positions", so the run records the schema's default as given.
+TEST(Schema, DefaultsAreTheOnesTheSolverGets) {
+  const auto schema = json::parse(run_gearbench("schema stiffness").out);
+  const auto o = run_gearbench("run " GEARBENCH_SOURCE_DIR "/cases/seed003_spur_stiffness.json");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto result = json::parse(o.out);
+  for (const char* key : {"positions", "path_points", "beam_start", "foundation"})
+    EXPECT_EQ(result["options_given"][key], schema["properties"][key]["default"]) << key;
+  // A spur pair is one slice whatever was given: the record says so.
+  EXPECT_EQ(result["options_given"]["slices"], 50);
+  EXPECT_EQ(result["options_used"]["slices"], 1);
+}
+
+TEST(Schema, AKindWithoutATableSaysItHasNoSchema) {
+  const auto o = run_gearbench("schema dynamics");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_TRUE(o.out.empty());
+  EXPECT_NE(o.err.find("error: kind dynamics: has no schema yet"), std::string::npos) << o.err;
+  EXPECT_EQ(run_gearbench("schema no_such_kind").exit_code, 2);
+}
+
+TEST(Schema, AllKindsSchemaChoosesEachKindsOwn) {
+  const auto o = run_gearbench("schema");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto all = json::parse(o.out);
+  for (const char* kind : {"stiffness", "efficiency", "micropitting_iso", "geometry"})
+    EXPECT_TRUE(all["$defs"].contains(kind)) << kind;
+  EXPECT_NE(all["$comment"].get<std::string>().find("dynamics"), std::string::npos);
+  const SchemaCheck check(all);
+  auto geometry = read_case(GEARBENCH_SOURCE_DIR "/cases/seed004_spur_geometry.json");
+  EXPECT_TRUE(check.errors(geometry).empty());
+  geometry["gear_pair"]["not_a_key"] = 1;  // the geometry kind's own schema is the one applied
+  EXPECT_EQ(check.errors(geometry), std::vector<std::string>{"case.gear_pair.not_a_key: unknown key"});
+}
+
+}  // namespace
