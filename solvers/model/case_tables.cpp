@@ -167,21 +167,17 @@ OptionTable<Lubricant> make_lubricant_table() {
 
 }  // namespace
 
-const OptionTable<GearPair>& gear_pair_table() {
-  static const auto t = make_gear_pair_table();
-  return t;
+/// Each table is built once, on first use (the order of static initialisation across files
+/// is not ours to rely on).
+template <auto make>
+const auto& built_once() {
+  static const auto table = make();
+  return table;
 }
-const OptionTable<Material>& material_table() {
-  static const auto t = make_material_table();
-  return t;
-}
-const OptionTable<OperatingPoint>& operating_table() {
-  static const auto t = make_operating_table();
-  return t;
-}
-const OptionTable<Lubricant>& lubricant_table() {
-  static const auto t = make_lubricant_table();
-  return t;
-}
+
+const OptionTable<GearPair>& gear_pair_table() { return built_once<make_gear_pair_table>(); }
+const OptionTable<Material>& material_table() { return built_once<make_material_table>(); }
+const OptionTable<OperatingPoint>& operating_table() { return built_once<make_operating_table>(); }
+const OptionTable<Lubricant>& lubricant_table() { return built_once<make_lubricant_table>(); }
 
 }  // namespace gearbench::model
