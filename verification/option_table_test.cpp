@@ -1,0 +1,96 @@
+// The Options tables (issue 21): validate() names the key, the value and the allowed range as
+// the reader does; a value read at a bound passes; what a table records reads back the same.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "efficiency/efficiency_sweep.h"
+#include "efficiency/mesh_loss.h"
+#include "micropitting/iso15144_case.h"
+#include "model/case_reader.h"
+#include "stiffness/mesh_stiffness.h"
+#include "support/test_support.h"
+
+namespace gearbench {
+namespace {
+
+using nlohmann::json;
+using testing_support::input_error_of;
+
+TEST(OptionTable, ValidateNamesKeyValueAndRange) {
+  stiffness::MeshStiffnessOptions o;
+  o.positions = 1;
+  EXPECT_EQ(input_error_of([&] { o.validate(); }), "positions = 1: allowed range is [2, 100000]");
+  o = {};
+  o.crack = stiffness::GearCrack{{stiffness::Crack::Type::pitch, 1e-3, 0.5}, 2};  // gear index 2 is gear 3
+  EXPECT_EQ(input_error_of([&] { o.validate(); }), "crack.gear = 3: allowed range is [1, 2]");
+  o.crack->gear = 0;
+  o.crack->crack.length = 20.0;  // m: 20000 mm
+  EXPECT_EQ(input_error_of([&] { o.validate(); }), "crack.length_mm = 20000: allowed range is [0, 10000] mm");
+
+  efficiency::MeshLossOptions l;
+  l.friction_coefficient = 0.7;
+  EXPECT_EQ(input_error_of([&] { l.validate(); }), "friction.mu = 0.7: allowed range is [0, 0.5]");
+  l = {};
+  l.friction_model = lubricant::FrictionModel::ehl;
+  EXPECT_EQ(input_error_of([&] { l.validate(); }),
+            "friction.eyring_stress_MPa: missing, required by friction.model = \"ehl\"");
+  l.eyring_stress = 2e9;
+  EXPECT_EQ(input_error_of([&] { l.validate(); }), "friction.eyring_stress_MPa = 2000: allowed range is (0, 1000] MPa");
+
+  efficiency::SweepSpec s{{50.0, -1.0}, {}, {}};
+  EXPECT_EQ(input_error_of([&] { s.validate(); }), "sweep.torque_Nm[1] = -1: allowed range is (0, 1000000000] N*m");
+  EXPECT_EQ(input_error_of([] { efficiency::SweepSpec{}.validate(); }),
+            "sweep: give at least one of torque_Nm, speed_rpm, pressure_angle_deg");
+}
+
+// The reader converts a case value to SI (× scale + offset); validate() converts the bounds the
+// same way, so a value read exactly at a bound is not refused by rounding.
+TEST(OptionTable, AValueReadAtABoundPassesValidate) {
+  const auto c = json::parse(R"({"pinion_speed_rpm": 1e6, "pinion_torque_Nm": 1e-6, "oil_temperature_C": 400,
+                                  "roughness_Ra_um": [0, 100]})");
+  model::ObjectReader r(c, "operating");
+  model::OperatingPoint op;
+  model::operating_table().read(r, op);
+  EXPECT_NO_THROW(model::operating_table().validate(op, "operating."));
+  op.oil_temperature = 400.0 + 273.15 + 1e-9;
+  EXPECT_NE(input_error_of([&] { model::operating_table().validate(op, "operating."); })
+                .find("operating.oil_temperature_C = 400"), std::string::npos);
+}
+
+// to_json writes the options in case keys and units: read back, they are the same options.
+TEST(OptionTable, WhatATableRecordsReadsBackTheSame) {
+  stiffness::MeshStiffnessOptions o;
+  o.beam_start = stiffness::BeamStart::improved;
+  o.fillet = stiffness::Fillet::circular_arc;
+  o.positions = 90;
+  o.bore_radius = std::array<double, 2>{0.01, 0.02};
+  o.crack = stiffness::GearCrack{{stiffness::Crack::Type::root, 2.5e-3, 0.7}, 1};
+  const auto& t = stiffness::MeshStiffnessOptions::table();
+  const json recorded = t.to_json(o);
+  EXPECT_EQ(recorded["bore_diameter_mm"], json::array({20.0, 40.0}));
+  EXPECT_EQ(recorded["crack"]["gear"], 2);
+  model::ObjectReader r(recorded, "");
+  stiffness::MeshStiffnessOptions back;
+  t.read(r, back);
+  r.finish();
+  EXPECT_EQ(t.to_json(back), recorded);
+  EXPECT_EQ(back.crack->gear, 1);
+  EXPECT_DOUBLE_EQ(back.crack->crack.length, 2.5e-3);
+}
+
+TEST(OptionTable, SchemaDefaultsAreTheMemberInitialisers) {
+  const auto schema = efficiency::MeshLossOptions::table().schema();
+  EXPECT_EQ(schema["properties"]["positions"]["default"], efficiency::MeshLossOptions{}.positions);
+  EXPECT_EQ(schema["properties"]["rolling_loss_constant_Pa"]["default"], 6.2053e8);
+  EXPECT_EQ(schema["properties"]["friction"]["properties"]["mu_boundary"]["minimum"], 0.07);
+  EXPECT_EQ(schema["additionalProperties"], false);
+  // A default that depends on other keys is said in words, never given as a number.
+  const auto oil = micropitting::MicropittingCase::table().schema()["properties"]["oil"]["anyOf"][0];
+  EXPECT_FALSE(oil["properties"]["lubricant_factor_XL"].contains("default"));
+  EXPECT_NE(oil["properties"]["lubricant_factor_XL"]["description"].get<std::string>().find("by base"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace gearbench
