@@ -240,7 +240,7 @@ std::string message_of(const Inputs& in) {
 TEST(Iso15144Inputs, ErrorsNameKeyValueAndRange) {
   auto in = seed001();
   in.K_v = 0.5;
-  EXPECT_EQ(message_of(in), "micropitting.K_v = 0.5: allowed [1, 10]");
+  EXPECT_EQ(message_of(in), "micropitting.K_v = 0.5: allowed range is [1, 10]");
   in = seed001();
   in.oil.nu100 = 400e-6;
   EXPECT_NE(message_of(in).find("micropitting.oil.nu100_mm2_s = 400"), std::string::npos);

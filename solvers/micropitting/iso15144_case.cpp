@@ -90,31 +90,33 @@ model::OptionTable<MicropittingCase> make_test_table() {
   return t;
 }
 
-model::OptionTable<MicropittingCase> make_table() {
-  model::OptionTable<MicropittingCase> t;
+model::OptionTable<iso::Inputs> make_inputs_table() {
+  model::OptionTable<iso::Inputs> t;
   const Range factor = Range::closed(1.0, 10.0);
-  t.number("K_A", [](auto& c) -> auto& { return c.gear.K_A; }, factor, {.description = "application factor"});
-  t.number("K_v", [](auto& c) -> auto& { return c.gear.K_v; }, factor, {.description = "dynamic factor"});
-  t.number("K_Halpha", [](auto& c) -> auto& { return c.gear.K_Halpha; }, factor,
-           {.description = "transverse load factor"});
-  t.number("K_Hbeta", [](auto& c) -> auto& { return c.gear.K_Hbeta; }, factor, {.description = "face load factor"});
-  t.choice("lubrication_method", [](auto& c) -> auto& { return c.gear.method; }, methods, method_spec);
-  t.number("tip_relief_factor_XCa", [](auto& c) -> auto& { return c.gear.tip_relief_factor; }, Range::closed(1.0, 3.0),
+  t.number("K_A", &iso::Inputs::K_A, factor, {.description = "application factor"});
+  t.number("K_v", &iso::Inputs::K_v, factor, {.description = "dynamic factor"});
+  t.number("K_Halpha", &iso::Inputs::K_Halpha, factor, {.description = "transverse load factor"});
+  t.number("K_Hbeta", &iso::Inputs::K_Hbeta, factor, {.description = "face load factor"});
+  t.choice("lubrication_method", &iso::Inputs::method, methods, method_spec);
+  t.number("tip_relief_factor_XCa", &iso::Inputs::tip_relief_factor, Range::closed(1.0, 3.0),
            {.description = "X_Ca of the bulk temperature (84); 1 for unmodified profiles"});
-  t.integer("accuracy_grade", [](auto& c) -> auto& { return c.gear.accuracy_grade; }, best_grade, worst_grade,
-            grade_spec);
-  t.choice("buttressing", [](auto& c) -> auto& { return c.gear.buttressing; },
-           std::vector<std::pair<std::string, bool>>{{"on", true}, {"off", false}},
+  t.integer("accuracy_grade", &iso::Inputs::accuracy_grade, best_grade, worst_grade, grade_spec);
+  t.choice("buttressing", &iso::Inputs::buttressing, std::vector<std::pair<std::string, bool>>{{"on", true}, {"off", false}},
            {.description = "buttressing factor X_but at A and E of helical gears"});
-  t.number("material_factor_WW", &MicropittingCase::material_factor, Range::positive(5.0),
-           {.description = "W_W of lambda_GFP (2014 edition; unconfirmed, 1 keeps the 2010 form)"});
   static const auto oil = make_oil_table();
-  static const auto solids = make_solids_table();
-  static const auto test = make_test_table();
-  t.section("oil", [](auto& c) -> auto& { return c.gear.oil; }, oil,
+  t.section("oil", &iso::Inputs::oil, oil,
             {.description = "the oil, explicit or named from the catalogue (gearbench lubricants)", .required = true},
             lubricant::named_or_explicit_schema);
-  t.section("solids", &MicropittingCase::solids, solids,
+  return t;
+}
+
+model::OptionTable<MicropittingCase> make_table() {
+  model::OptionTable<MicropittingCase> t;
+  t.include([](auto& c) -> auto& { return c.gear; }, iso::Inputs::table());
+  t.number("material_factor_WW", &MicropittingCase::material_factor, Range::positive(5.0),
+           {.description = "W_W of lambda_GFP (2014 edition; unconfirmed, 1 keeps the 2010 form)"});
+  static const auto test = make_test_table();
+  t.section("solids", &MicropittingCase::solids, solids_table(),
             {.description = "thermal data of the gear bodies", .required = true});
   t.section("reference_test", [](auto& c) -> auto& { return c; }, test,
             {.description = "the test that rates the oil, evaluated by the same method", .required = true});
@@ -122,6 +124,16 @@ model::OptionTable<MicropittingCase> make_table() {
 }
 
 }  // namespace
+
+const model::OptionTable<model::ThermalSolids>& solids_table() {
+  static const auto t = make_solids_table();
+  return t;
+}
+
+const model::OptionTable<iso::Inputs>& iso::Inputs::table() {
+  static const auto t = make_inputs_table();
+  return t;
+}
 
 const model::OptionTable<MicropittingCase>& MicropittingCase::table() {
   static const auto t = make_table();

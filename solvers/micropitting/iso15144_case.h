@@ -45,6 +45,9 @@ struct MicropittingCase {
   [[nodiscard]] MicropittingCase used() const;
 };
 
+/// "micropitting.solids": the thermal data of the gear bodies, per key [gear 1, gear 2].
+const model::OptionTable<model::ThermalSolids>& solids_table();
+
 /// Reads "micropitting" (required) with the case's "materials" and "operating" (required).
 /// InputError names the key, the value and the allowed range.
 MicropittingCase read_micropitting(model::ObjectReader& root, const model::GearCase& c,

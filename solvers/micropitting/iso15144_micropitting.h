@@ -23,6 +23,7 @@
 
 #include "model/gear_pair.h"
 #include "model/materials.h"
+#include "model/option_table.h"
 
 namespace gearbench::micropitting::iso15144 {
 
@@ -62,8 +63,11 @@ struct Inputs {
   int accuracy_grade = 7;          ///< Q of the spur load sharing (46)–(48); ≤ 7 counts as 7
   bool buttressing = true;         ///< X_but at A and E of helical gears
   std::string operating_section = "operating";  ///< where speed, torque, Ra, θ_oil were read
+  /// The keys of the "micropitting" section that these inputs hold (K factors, lubrication,
+  /// X_Ca, accuracy grade, buttressing, oil), as a case gives them (iso15144_case.cpp).
+  static const model::OptionTable<Inputs>& table();
   /// Throws InputError naming the case key (as in the "micropitting" section), the value and
-  /// the allowed range.
+  /// the allowed range: the table's ranges, then what the method needs of the other sections.
   void validate() const;
 };
 

@@ -231,6 +231,25 @@ class OptionTable {
     return *this;
   }
 
+  /// The keys of another struct's table at this level, in the member `access` returns (the
+  /// part of a case section that one solver input holds), with its reading rules.
+  template <class Access, class S>
+  OptionTable& include(Access access, const OptionTable<S>& table) {
+    for (const auto& se : table.entries_) {
+      Entry e{se.info};
+      if (se.get) e.get = [access, g = se.get](const O& o) { return g(std::invoke(access, o)); };
+      if (se.read) e.read = [access, r = se.read](ObjectReader& rd, O& o) { r(rd, std::invoke(access, o)); };
+      if (se.validate)
+        e.validate = [access, v = se.validate](const O& o, const std::string& p) { v(std::invoke(access, o), p); };
+      entries_.push_back(std::move(e));
+    }
+    for (const auto& f : table.after_read_)
+      after_read_.push_back([access, f](ObjectReader& r, O& o) { f(r, std::invoke(access, o)); });
+    for (const auto& f : table.rules_)
+      rules_.push_back([access, f](const O& o, const std::string& p) { f(std::invoke(access, o), p); });
+    return *this;
+  }
+
   /// A key that after_read() reads by hand (a section with a reader of its own); `schema`
   /// is its value's schema, or an object schema that says what it does not check.
   OptionTable& external(std::string key, nlohmann::json schema, KeySpec spec) {
@@ -242,7 +261,7 @@ class OptionTable {
   /// Reading that the keys alone cannot say (one key derived from others); runs after the
   /// declared keys are read, before the caller's finish().
   OptionTable& after_read(std::function<void(ObjectReader&, O&)> f) {
-    after_read_ = std::move(f);
+    after_read_.push_back(std::move(f));
     return *this;
   }
   /// A rule between keys, checked by validate() after the ranges.
@@ -258,7 +277,7 @@ class OptionTable {
       if (e.info.type == KeyType::external) continue;
       if (e.info.spec.required || r.has(e.info.key)) e.read(r, o);
     }
-    if (after_read_) after_read_(r, o);
+    for (const auto& f : after_read_) f(r, o);
   }
 
   /// InputError naming the key (prefix + key), the value and the allowed range.
@@ -334,8 +353,10 @@ class OptionTable {
   [[noreturn]] static void throw_range(const std::string& key, double value, const KeyInfo& info);
   [[noreturn]] static void throw_not_a_choice(const std::string& key, const KeyInfo& info);
 
+  template <class>
+  friend class OptionTable;
   std::vector<Entry> entries_;
-  std::function<void(ObjectReader&, O&)> after_read_;
+  std::vector<std::function<void(ObjectReader&, O&)>> after_read_;
   std::vector<std::function<void(const O&, const std::string&)>> rules_;
 };
 
