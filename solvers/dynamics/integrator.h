@@ -1,13 +1,16 @@
 #pragma once
-// The time integrators of the dynamics models, behind one interface: SUNDIALS 6.4 CVODE
+// The time integrators of the dynamics models, behind one interface: GSL 2.7 odeiv2's
+// rk8pd (Prince–Dormand 8(9) with the standard step control, the default) and SUNDIALS 6.4 CVODE
 // (BDF with Newton on a dense matrix; Adams–Moulton with fixed-point iteration) and ARKODE
 // ERKStep (explicit Runge–Kutta pairs with an embedded error estimate). The choice is a
 // measured one: docs/dynamics-model.md, "Integrators: work–precision", has the study.
 //
-// Every integrator stops exactly at a given time (CVodeSetStopTime / ERKStepSetStopTime),
+// Every integrator stops exactly at a given time (CVodeSetStopTime / ERKStepSetStopTime;
+// GSL's evolve steps onto its end time),
 // restarts after a discontinuity of the right-hand side keeping its last step size, and
-// optionally stops at the roots of root functions (CVodeRootInit / ERKStepRootInit). Every
-// SUNDIALS return code is checked and turned into a ConvergenceError (too much work or
+// optionally stops at the roots of root functions (CVodeRootInit / ERKStepRootInit; for GSL,
+// sign changes over an accepted step located by re-stepping from its start). Every
+// SUNDIALS and GSL return code is checked and turned into a ConvergenceError (too much work or
 // accuracy, error-test or convergence failures) or std::runtime_error, with the flag's name.
 #include <functional>
 #include <memory>
@@ -18,6 +21,7 @@
 namespace gearbench::dynamics {
 
 enum class IntegratorMethod {
+  rk8pd,             ///< GSL odeiv2 Prince–Dormand 8(9), 13 stages, standard step control
   bdf,               ///< CVODE BDF, Newton on a dense difference-quotient Jacobian
   adams,             ///< CVODE Adams–Moulton, fixed-point iteration (no Jacobian, no linear solves)
   bogacki_shampine,  ///< ARKODE ERK Bogacki–Shampine 3(2), 4 stages
@@ -43,9 +47,10 @@ std::span<const IntegratorMethodName> integrator_methods();
 [[nodiscard]] IntegratorMethod integrator_method(const std::string& key);
 
 struct IntegratorOptions {
-  /// Dormand–Prince 5(4) at rtol 3e-7: the fastest offered method at the checks' accuracy,
-  /// 1e-6 of the transmission error's peak-to-peak, in the work–precision study (docs).
-  IntegratorMethod method = IntegratorMethod::dormand_prince;
+  /// GSL rk8pd at rtol 1e-7: the fastest offered method at the checks' accuracy, 1e-6 of
+  /// the transmission error's peak-to-peak, in the work–precision study (docs,
+  /// docs/research/gsl-odeiv2/NOTE.md).
+  IntegratorMethod method = IntegratorMethod::rk8pd;
   double relative_tolerance = 1e-7;
   /// [m, rad, m/s, rad/s, J alike]: 1e-6·rtol, as the deflections are micrometres.
   double absolute_tolerance = 1e-13;
@@ -90,5 +95,9 @@ class Integrator {
 
 /// The integrator of `options.method` for a state of `size` unknowns.
 std::unique_ptr<Integrator> make_integrator(std::size_t size, Integrator::Rhs rhs, const IntegratorOptions& options);
+/// The two families behind make_integrator: rk8pd (gsl_integrator.cpp) and the SUNDIALS methods.
+std::unique_ptr<Integrator> make_gsl_integrator(std::size_t size, Integrator::Rhs rhs, const IntegratorOptions& options);
+std::unique_ptr<Integrator> make_sundials_integrator(std::size_t size, Integrator::Rhs rhs,
+                                                     const IntegratorOptions& options);
 
 }  // namespace gearbench::dynamics

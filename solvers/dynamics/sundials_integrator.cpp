@@ -11,7 +11,6 @@
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include <algorithm>
-#include <array>
 #include <cstdlib>
 #include <exception>
 #include <stdexcept>
@@ -25,15 +24,6 @@
 namespace gearbench::dynamics {
 
 namespace {
-
-constexpr std::array<IntegratorMethodName, 6> method_names{{
-    {IntegratorMethod::bdf, "bdf", "CVODE BDF, Newton iteration on a dense difference-quotient Jacobian", true},
-    {IntegratorMethod::adams, "adams", "CVODE Adams–Moulton, fixed-point iteration", true},
-    {IntegratorMethod::bogacki_shampine, "bogacki_shampine", "ARKODE ERK Bogacki–Shampine 3(2), 4 stages", true},
-    {IntegratorMethod::dormand_prince, "dormand_prince", "ARKODE ERK Dormand–Prince 5(4), 7 stages", true},
-    {IntegratorMethod::verner, "verner", "ARKODE ERK Verner 6(5), 8 stages", false},
-    {IntegratorMethod::fehlberg, "fehlberg", "ARKODE ERK Fehlberg 8(7), 13 stages", false},
-}};
 
 /// The calls of one SUNDIALS package, all of the same shape in CVODE and ERKStep.
 struct Package {
@@ -265,45 +255,8 @@ const std::vector<double>& SundialsIntegrator::advance(double t_out, double stop
 
 }  // namespace
 
-std::span<const IntegratorMethodName> integrator_methods() { return method_names; }
-
-const char* integrator_key(IntegratorMethod method) {
-  for (const auto& m : method_names)
-    if (m.method == method) return m.key;
-  throw std::logic_error("integrator_key: unknown method");
-}
-
-IntegratorMethod integrator_method(const std::string& key) {
-  std::string allowed;
-  for (const auto& m : method_names) {
-    if (!m.offered) continue;
-    if (key == m.key) return m.method;
-    allowed += fmt::format("{}\"{}\"", allowed.empty() ? "" : ", ", m.key);
-  }
-  throw InputError(fmt::format("integrator.method = \"{}\": allowed values are {}", key, allowed));
-}
-
-void IntegratorOptions::validate() const {
-  if (!(relative_tolerance >= 1e-14 && relative_tolerance <= 1e-2))
-    throw InputError(fmt::format("integrator.rtol = {}: allowed range is [1e-14, 0.01]", relative_tolerance));
-  if (!(absolute_tolerance >= 1e-20 && absolute_tolerance <= 1e-2))
-    throw InputError(fmt::format("integrator.atol = {}: allowed range is [1e-20, 0.01]", absolute_tolerance));
-  if (max_steps < 1) throw InputError(fmt::format("integrator.max_steps = {}: must be >= 1", max_steps));
-}
-
-const std::vector<double>& Integrator::advance_across_roots(double t_out, double stop, double tolerance,
-                                                            long& events) {
-  advance(t_out, stop);
-  while (at_root_) {
-    ++events;
-    reset(t_, y_);
-    if (t_ > t_out - tolerance) break;  // a root on the target: y is y(t_out)
-    advance(t_out, stop);
-  }
-  return y_;
-}
-
-std::unique_ptr<Integrator> make_integrator(std::size_t size, Integrator::Rhs rhs, const IntegratorOptions& options) {
+std::unique_ptr<Integrator> make_sundials_integrator(std::size_t size, Integrator::Rhs rhs,
+                                                     const IntegratorOptions& options) {
   return std::make_unique<SundialsIntegrator>(size, std::move(rhs), options);
 }
 
