@@ -179,9 +179,50 @@ TEST(DynamicsIntegrator, EveryMethodFollowsAnOscillatorAcrossARestart) {
   }
 }
 
+// A falling body dropped at 1 m: rk8pd (whose roots are located by gsl_integrator.cpp, not
+// by the package) stops at the root of g = y, at t = √(2/g₀), returns the state there, and a
+// restart there does not find the same root again.
+TEST(DynamicsIntegrator, Rk8pdStopsAtARootAndRestartsPastIt) {
+  const double g0 = 9.81, t_root = std::sqrt(2.0 / g0);
+  for (const auto& m : dynamics::integrator_methods()) {
+    if (m.method != dynamics::IntegratorMethod::rk8pd) continue;
+    dynamics::IntegratorOptions o;
+    o.method = m.method;
+    o.relative_tolerance = 1e-10;
+    o.absolute_tolerance = 1e-12;
+    const auto integrator = dynamics::make_integrator(2, [g0](double, const double* y, double* dy) {
+      dy[0] = y[1];
+      dy[1] = -g0;
+    }, o);
+    integrator->set_roots(1, [](double, const double* y, double* g) { g[0] = y[0]; });
+    integrator->reset(0.0, {1.0, 0.0});
+    long events = 0;
+    const std::vector<double> at = integrator->advance(1.0, 1.0);
+    EXPECT_TRUE(integrator->at_root()) << m.key;
+    EXPECT_NEAR(integrator->time(), t_root, 1e-8) << m.key;
+    EXPECT_NEAR(at[0], 0.0, 1e-8) << m.key;
+    integrator->reset(integrator->time(), at);
+    const auto& y = integrator->advance_across_roots(1.0, 1.0, 1e-12, events);
+    EXPECT_EQ(events, 0) << m.key;
+    EXPECT_NEAR(y[0], 1.0 - 0.5 * g0, 1e-7) << m.key;
+  }
+}
+
+// An exception of the right-hand side reaches the caller through GSL's C frames.
+TEST(DynamicsIntegrator, Rk8pdPassesOnTheRightHandSidesException) {
+  const auto integrator = dynamics::make_integrator(1, [](double t, const double*, double* dy) {
+    if (t > 0.5) throw InputError("right-hand side refused");
+    dy[0] = 1.0;
+  }, dynamics::IntegratorOptions{});
+  integrator->reset(0.0, {0.0});
+  EXPECT_THROW((void)integrator->advance(1.0, 1.0), InputError);
+}
+
 TEST(DynamicsIntegrator, MethodKeysAreTheOfferedOnesAndABadKeyNamesTheAllowedOnes) {
   EXPECT_EQ(dynamics::integrator_method("dormand_prince"), dynamics::IntegratorMethod::dormand_prince);
   EXPECT_EQ(dynamics::integrator_method("adams"), dynamics::IntegratorMethod::adams);
+  EXPECT_EQ(dynamics::integrator_method("rk8pd"), dynamics::IntegratorMethod::rk8pd);
+  EXPECT_EQ(dynamics::IntegratorOptions{}.method, dynamics::IntegratorMethod::rk8pd);
   for (const char* refused : {"rk45", "verner", "fehlberg"}) {
     try {
       (void)dynamics::integrator_method(refused);
