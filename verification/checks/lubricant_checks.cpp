@@ -67,15 +67,24 @@ double catalogue_rho15(BaseOil base) {
   return c.grade(220, base, std::nullopt, "grade").density_15C->value;
 }
 
-/// η(θ) [mPa·s] from the ASTM D341 line through the table's 30 and 100 °C values. The table
-/// gives dynamic viscosities; D341 is a law of kinematic viscosity, so each is divided by the
-/// density of ISO/TR 15144-1 (20) with the catalogue's ρ15 of the base (the table gives none).
-double d341_eta(const PublishedOil& oil, double theta, BaseOil base = BaseOil::mineral) {
-  const double rho15 = catalogue_rho15(base);  // mineral: 902 kg/m³ (GEARpie's MINR); PAG: 1059 (PAGD)
+/// The ASTM D341 line through a table's dynamic viscosities η [mPa·s] at 30 and 100 °C (entries
+/// 0 and 2). D341 is a law of kinematic viscosity, so each is divided by the density of
+/// ISO/TR 15144-1 (20) from ρ15 [kg/m³].
+lubricant::WaltherLine d341_line(const std::array<double, 3>& eta, double rho15) {
   const auto rho = [&](double c) { return lubricant::iso15144_density(rho15, c + celsius_zero); };
-  const lubricant::WaltherLine line(30.0 + celsius_zero, oil.eta[0] / rho(30.0) * 1e3, 100.0 + celsius_zero,
-                                    oil.eta[2] / rho(100.0) * 1e3);
-  return line.kinematic_viscosity_mm2_s(theta + celsius_zero) * rho(theta) * 1e-3;
+  return {30.0 + celsius_zero, eta[0] / rho(30.0) * 1e3, 100.0 + celsius_zero, eta[2] / rho(100.0) * 1e3};
+}
+
+/// η(θ) [mPa·s] on that line, at the same density law.
+double d341_eta(const std::array<double, 3>& eta, double rho15, double theta) {
+  const double T = theta + celsius_zero;
+  return d341_line(eta, rho15).kinematic_viscosity_mm2_s(T) * lubricant::iso15144_density(rho15, T) * 1e-3;
+}
+
+/// η(θ) [mPa·s] of a table 2.3 oil, which gives no density: the catalogue's ρ15 of its base
+/// (mineral: 902 kg/m³, GEARpie's MINR; PAG: 1059, PAGD).
+double d341_eta(const PublishedOil& oil, double theta, BaseOil base = BaseOil::mineral) {
+  return d341_eta(oil.eta, catalogue_rho15(base), theta);
 }
 
 std::string d341_justification(const char* which) {
@@ -145,12 +154,9 @@ const HandbookOil handbook_table_25[] = {
 /// ρ15 of a handbook oil from its ρ25 by ISO/TR 15144-1 (20) (ρ falls 0.7 kg/m³ per K).
 double handbook_rho15(const HandbookOil& oil) { return oil.rho25 + 0.7 * (25.0 - 15.0); }
 
-/// The ASTM D341 line of a handbook oil through its 30 and 100 °C values, in kinematic
-/// viscosity with its own measured density (ISO/TR 15144-1 (20) for the temperature).
-lubricant::WaltherLine handbook_line(const HandbookOil& oil) {
-  const auto rho = [&](double c) { return lubricant::iso15144_density(handbook_rho15(oil), c + celsius_zero); };
-  return {30.0 + celsius_zero, oil.eta[0] / rho(30.0) * 1e3, 100.0 + celsius_zero, oil.eta[2] / rho(100.0) * 1e3};
-}
+/// The ASTM D341 line of a handbook oil through its 30 and 100 °C values, with its own
+/// measured density.
+lubricant::WaltherLine handbook_line(const HandbookOil& oil) { return d341_line(oil.eta, handbook_rho15(oil)); }
 
 const bool handbook_registered = [] {
   const HandbookOil& light = handbook_table_25[3];
@@ -166,10 +172,7 @@ const bool handbook_registered = [] {
                        "handbook's (no assumption), the 3 printed digits are ±0.4 %",
       .tier = Tier::fast,
       .run = [light](const CheckContext&) {
-        const double T = 60.0 + celsius_zero;
-        return CheckValue{handbook_line(light).kinematic_viscosity_mm2_s(T) *
-                              lubricant::iso15144_density(handbook_rho15(light), T) * 1e-3,
-                          light.eta[1]};
+        return CheckValue{d341_eta(light.eta, handbook_rho15(light), 60.0), light.eta[1]};
       }});
   const HandbookOil& heavy = handbook_table_25[4];
   Registry::instance().add(CheckSpec{
@@ -431,8 +434,7 @@ void add_alpha_against_asme(const CheckContext&, reports::Report& report) {
       const double estimate = iso15144_rho15_estimate(line.kinematic_viscosity_mm2_s(40.0 + celsius_zero));
       dens += fmt::format("{}{} {:.0f} vs {:.1f} kg/m³ ({:+.1f} %)", dens.empty() ? "" : "; ", oil.name, rho15,
                           estimate, 100.0 * (rho15 / estimate - 1.0));
-      const double T38 = 38.0 + celsius_zero;
-      const double oil_eta38 = line.kinematic_viscosity_mm2_s(T38) * lubricant::iso15144_density(rho15, T38) * 1e-6;
+      const double oil_eta38 = d341_eta(oil.eta, rho15, 38.0) * 1e-3;
       for (std::size_t i = 0; i < table_temperatures.size(); ++i) {
         const double a = *c.iso15144_pressure_viscosity(BaseOil::mineral, oil_eta38, table_temperatures[i] + celsius_zero) * 1e9;
         alpha_dev.push_back(100.0 * (a / oil.alpha[i] - 1.0));
