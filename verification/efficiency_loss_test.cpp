@@ -179,7 +179,7 @@ TEST(EhlFriction, DefaultGridWithinOnePercentOfFourTimesFiner) {
   const geometry::GearPairGeometry g(d.pair);
   const auto fluid = ehl::LineContactData::from_gear_media(*seed004_media().materials, *seed004_media().lubricant);
   auto fine = efficiency::EhlFriction::default_grid();
-  fine.levels = 5;
+  fine.nodes = 641;
   for (double f : {0.0, 0.5, 0.9}) {
     const auto k = g.kinematics(g.path().A + f * (g.path().C - g.path().A), d.op.pinion_speed);
     lubricant::ContactState c;

@@ -1,5 +1,6 @@
-// Unit tests of the line relaxation's held nodes (cavitated, or the coarse nodes of an
-// unresolved pressure spike) and of the multigrid option that holds them.
+// Unit tests of the EHL multigrid's pieces: the second-order wedge stencil, the Jacobian it
+// implies, the grid options (nodes, levels, the sized coarsest grid), and a warm start from a
+// converged solution that must stay put.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,63 +9,103 @@
 #include "ehl/deformation.h"
 #include "ehl/fas_multigrid.h"
 #include "ehl/line_contact_solver.h"
-#include "ehl/line_relaxation.h"
+#include "ehl/reynolds_stencil.h"
+#include "model/errors.h"
 
 namespace gearbench::ehl {
 namespace {
 
-/// A Gauss–Seidel (Poiseuille-dominated) line of 33 nodes with a smooth residual.
-struct Line {
-  static constexpr std::size_t n = 33;
-  double h = 0.1;
-  std::vector<double> eps = std::vector<double>(n, 1.0), rho = std::vector<double>(n, 1.0);
+TEST(ReynoldsStencil, SecondOrderUpwindWedgeFirstOrderAtTheFirstNode) {
+  EXPECT_EQ(wedge_weights(1), (std::array<double, 3>{1.0, -1.0, 0.0}));
+  EXPECT_EQ(wedge_weights(2), (std::array<double, 3>{1.5, -2.0, 0.5}));
+  // The weights differentiate a quadratic exactly: (1.5·4 − 2·1 + 0.5·0)/1 = 4 = d(x²)/dx at x = 2.
+  const auto w = wedge_weights(5);
+  EXPECT_DOUBLE_EQ(w[0] * 25.0 + w[1] * 16.0 + w[2] * 9.0, 10.0);
+}
+
+/// A 9-node grid with smooth coefficients.
+struct Grid {
+  static constexpr std::size_t n = 9;
+  double h = 0.25;
+  std::vector<double> eps_face = std::vector<double>(n - 1, 0.3), rho = std::vector<double>(n, 1.0);
   Deformation deformation{n, h};
-  std::vector<double> P = std::vector<double>(n, 1.0), residual = std::vector<double>(n, 0.0);
-  std::vector<char> jacobi = std::vector<char>(n, 0);
-  Line() {
-    P.front() = P.back() = 0.0;
-    for (std::size_t i = 1; i + 1 < n; ++i) residual[i] = std::sin(0.3 * static_cast<double>(i));
-  }
-  std::vector<double> change(const std::vector<char>& held) {
-    LineRelaxation line(n, 2);
-    const ReynoldsCoefficients c{eps, rho, deformation, h, 0.1, 1.0, 0.0};
-    return line.change(c, P, residual, jacobi, 0.3, 0.2, held);
-  }
+  ReynoldsCoefficients coefficients() const { return {eps_face, rho, deformation, h, 0.2, 1.0, 0.0}; }
 };
 
-TEST(LineRelaxation, HeldNodesDoNotChange) {
-  Line line;
-  std::vector<char> held(Line::n, 0);
-  held[10] = held[11] = held[20] = 1;
-  const auto free = line.change({});
-  const auto dP = line.change(held);
-  for (std::size_t i : {10u, 11u, 20u}) {
-    EXPECT_NE(free[i], 0.0) << i;
-    EXPECT_EQ(dP[i], 0.0) << i;
+TEST(ReynoldsStencil, UniformFilmShiftDoesNotMoveAnIncompressibleWedge) {
+  const Grid g;
+  for (std::size_t i = 1; i + 1 < Grid::n; ++i) EXPECT_DOUBLE_EQ(g.coefficients().h0_derivative(i), 0.0) << i;
+}
+
+TEST(ReynoldsStencil, JacobianHoldsThePoiseuilleStencilAndTheFilmResponse) {
+  const Grid g;
+  const auto c = g.coefficients();
+  const double h2 = g.h * g.h;
+  // Off the Poiseuille stencil only the film's response is left: υ(D/π)Σ_m w_m ρ K_|i−m−j|/h.
+  const std::size_t i = 5, j = 1;
+  const auto w = wedge_weights(i);
+  double film = 0.0;
+  for (std::size_t m = 0; m < 3; ++m) film += w[m] * g.deformation.kernel(i - m - j);
+  EXPECT_NEAR(c.jacobian(i, j), 0.2 * film / g.h, 1e-14);
+  EXPECT_NEAR(c.jacobian(i, i + 1) - 0.3 / h2, 0.2 * (w[0] * g.deformation.kernel(1) + w[1] * g.deformation.kernel(2) +
+                                                      w[2] * g.deformation.kernel(3)) / g.h, 1e-12);
+}
+
+TEST(EhlOptions, NodesFixTheFinestGridAndTheCoarsestIsSized) {
+  const LineContactProblem p(LineContactData::from_moes(20.0, 5.0));
+  EhlOptions o;
+  o.nodes = 641;
+  const auto r = LineContactSolver(p, o).solve();
+  EXPECT_EQ(r.X.size(), 641u);
+  // 640 = 5·2^7: the coarsest grid is the coarsest n0 = 5·2^k + 1 at least as fine as the sized one
+  // (65 nodes at M = 20: a quarter of the Hertz half-width on the [−4.96, 1.58] domain): 81, four levels.
+  EXPECT_EQ(r.levels, 4);
+}
+
+TEST(EhlOptions, BadGridsNameTheKey) {
+  const LineContactProblem p(LineContactData::from_moes(20.0, 5.0));
+  EhlOptions o;
+  o.nodes = 2004;  // 2003 intervals: no coarser grid, and too many nodes for the direct solve
+  EXPECT_THROW((void)LineContactSolver(p, o).solve(), InputError);
+  o = EhlOptions{};
+  o.levels = 4;  // levels without a coarsest grid
+  EXPECT_THROW(LineContactSolver(p, o), InputError);
+  o = EhlOptions{};
+  o.omega_jacobi = 1.5;
+  try {
+    LineContactSolver(p, o);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("grid.omega_jacobi"), std::string::npos);
   }
-  EXPECT_NE(dP[15], 0.0);
-  EXPECT_EQ(dP.front(), 0.0);
-  EXPECT_EQ(dP.back(), 0.0);
 }
 
-TEST(LineRelaxation, NoHeldNodesIsTheDefault) {
-  Line line;
-  EXPECT_EQ(line.change({}), line.change(std::vector<char>(Line::n, 0)));
+TEST(FasMultigrid, DefaultSolveReachesItsTargetAndReportsTheRule) {
+  const LineContactProblem p(LineContactData::from_moes(10.0, 0.0));
+  const auto r = LineContactSolver(p, EhlOptions{}).solve();
+  EXPECT_TRUE(r.converged);
+  EXPECT_GT(r.error_estimate, 0.0);
+  EXPECT_LE(r.error_estimate, 0.01);
+  EXPECT_NE(r.stop_rule.find("discretisation-error estimate"), std::string::npos);
+  EXPECT_EQ(r.work_units_at_error, r.work_units);
+  EXPECT_GE(r.fmg_nodes.size(), 3u);
 }
 
-// The held coarse nodes change the path, not the answer: where both schemes converge they
-// reach the same discrete solution to the tolerance (M = 20, L = 10 on 641 nodes).
-TEST(FasMultigrid, HoldingUnresolvedNodesKeepsTheSolution) {
+// A converged solution, given back as the start, must come back unchanged.
+TEST(FasMultigrid, WarmStartFromTheSolutionStays) {
   const LineContactProblem p(LineContactData::from_moes(20.0, 10.0));
   EhlOptions o;
-  const auto plain = FasMultigrid(p, o, ContactState{}).solve();
-  o.hold_unresolved = true;
-  const auto held = FasMultigrid(p, o, ContactState{}).solve();
-  ASSERT_TRUE(plain.converged);
-  ASSERT_TRUE(held.converged);
-  double h_min = plain.H[0];
-  for (double h : plain.H) h_min = std::min(h_min, h);
-  for (std::size_t i = 0; i < plain.H.size(); ++i) EXPECT_NEAR(held.H[i], plain.H[i], 1e-5 * h_min) << i;
+  o.nodes = 321;
+  o.stop = StopRule::residual;
+  o.tolerance = 1e-10;
+  FasMultigrid first(p, o, ContactState{});
+  const auto s = first.solve();
+  ASSERT_TRUE(s.converged);
+  const auto again = FasMultigrid(p, o, ContactState{}).solve(WarmStart{s.P, s.H0});
+  ASSERT_TRUE(again.converged);
+  EXPECT_LE(again.cycles, 2);
+  const double h_min = *std::min_element(s.H.begin(), s.H.end());
+  for (std::size_t i = 0; i < s.H.size(); ++i) EXPECT_NEAR(again.H[i], s.H[i], 1e-6 * h_min) << i;
 }
 
 }  // namespace

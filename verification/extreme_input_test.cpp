@@ -132,14 +132,14 @@ TEST(ExtremeInput, EhlLine) {
 TEST(ExtremeInput, EhlTransient) {
   auto c = load("seed004_transient_ehl.json");
   c["time_steps"] = 6;
-  c["grid"] = {{"levels", 3}};
+  c["grid"] = {{"nodes", 161}};
   walk("ehl_transient", c, true);
 }
 
 TEST(ExtremeInput, OilFilmStiffness) {
   auto c = load("oil_film_stiffness_spur.json");
   c["positions"] = 2;
-  c["grid"] = {{"levels", 3}};
+  c["grid"] = {{"nodes", 161}};
   walk("oil_film_stiffness", c, true);
 }
 
@@ -162,7 +162,7 @@ TEST(ExtremeInput, HerringboneDynamics) {
 
 TEST(ExtremeInput, ThermalEhlPoint) {
   auto c = load("tehl_point_sliding.json");
-  c["grid"] = {{"levels", 2}};
+  c["grid"] = {{"nodes", 81}};
   c["thermal"] = {{"max_iterations", 6}, {"film_nodes", 5}, {"solid_nodes", 4}};
   walk("tehl_point", c, true);
 }

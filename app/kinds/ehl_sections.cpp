@@ -14,22 +14,18 @@ ehl::EhlOptions read_ehl_grid(model::ObjectReader& root, ehl::EhlOptions default
   ehl::EhlOptions o = defaults;
   if (!root.has("grid")) return o;
   auto g = root.object("grid");
-  o.levels = g.optional_integer("levels", 1, 14).value_or(o.levels);
-  o.coarsest_nodes = g.optional_integer("coarsest_nodes", 9, 100001).value_or(o.coarsest_nodes);
-  if (g.has("nodes") && (g.has("levels") || g.has("coarsest_nodes")))
-    throw InputError("grid.nodes: give either nodes or levels with coarsest_nodes, not both");
-  if (auto nodes = g.optional_integer("nodes", 9, 1 << 20)) {
-    // nodes − 1 = (coarsest − 1)·2^(levels − 1): as many levels as keep ≥ 32 coarse intervals.
-    int intervals = *nodes - 1, levels = 1;
-    while (intervals % 2 == 0 && intervals / 2 >= 32) {
-      intervals /= 2;
-      ++levels;
-    }
-    if (levels == 1 && *nodes > 257)
-      throw InputError(fmt::format("grid.nodes = {}: use (n0 − 1)·2^k + 1 nodes (e.g. 1281, 4097) so "
-                                   "that multigrid has coarser grids", *nodes));
-    o.levels = levels;
-    o.coarsest_nodes = intervals + 1;
+  if (g.has("nodes") && g.has("levels"))
+    throw InputError("grid.nodes: give either nodes or levels (with coarsest_nodes), not both");
+  if (auto levels = g.optional_integer("levels", 1, 14)) {
+    o.levels = *levels;
+    o.nodes = 0;
+  }
+  o.coarsest_nodes = g.optional_integer("coarsest_nodes", 9, 1025).value_or(o.coarsest_nodes);
+  if (o.levels > 0 && o.coarsest_nodes == 0)
+    throw InputError("grid.levels: give coarsest_nodes with levels (or give nodes)");
+  if (auto nodes = g.optional_integer("nodes", 9, (1 << 20) + 1)) {
+    o.nodes = *nodes;
+    o.levels = 0;
   }
   if (auto x = g.optional_number("x_in", {-1e3, 0.0, false, true})) o.x_in = *x;
   if (auto x = g.optional_number("x_out", {0.0, 1e3, true, false})) o.x_out = *x;
@@ -37,15 +33,18 @@ ehl::EhlOptions read_ehl_grid(model::ObjectReader& root, ehl::EhlOptions default
     throw InputError("grid.x_in, grid.x_out: give both or neither");
   if (auto cycle = g.optional_string("cycle", {"V", "W"}))
     o.cycle = *cycle == "V" ? ehl::CycleType::V : ehl::CycleType::W;
-  if (auto relaxation = g.optional_string("relaxation", {"line", "point"}))
-    o.relaxation = *relaxation == "line" ? ehl::Relaxation::line : ehl::Relaxation::point;
   o.max_cycles = g.optional_integer("max_cycles", 1, 100000).value_or(o.max_cycles);
-  o.tolerance = g.optional_number("tolerance", {0.0, 1.0, true, true}).value_or(o.tolerance);
+  o.max_levels = g.optional_integer("max_levels", 2, 14).value_or(o.max_levels);
+  o.target_error = g.optional_number("target_error", {0.0, 0.5, true, false}).value_or(o.target_error);
+  if (auto stop = g.optional_string("stop", {"discretisation_error", "residual"}))
+    o.stop = *stop == "residual" ? ehl::StopRule::residual : ehl::StopRule::discretisation_error;
+  o.error_fraction = g.optional_number("error_fraction", {0.0, 1.0, true, false}).value_or(o.error_fraction);
+  if (auto tolerance = g.optional_number("tolerance", {0.0, 1.0, true, true})) {
+    o.tolerance = *tolerance;
+    if (!g.has("stop")) o.stop = ehl::StopRule::residual;  // a tolerance given asks for the residual rule
+  }
   g.finish();
-  const long finest = static_cast<long>(o.coarsest_nodes - 1) * (1L << (o.levels - 1)) + 1;
-  if (finest > (1L << 20) + 1)
-    throw InputError(fmt::format("grid: levels = {} from coarsest_nodes = {} gives {} nodes; allowed is "
-                                 "at most 1048577 on the finest grid", o.levels, o.coarsest_nodes, finest));
+  o.validate();
   return o;
 }
 

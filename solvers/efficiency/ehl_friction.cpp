@@ -10,8 +10,7 @@ namespace gearbench::efficiency {
 
 ehl::EhlOptions EhlFriction::default_grid() {
   ehl::EhlOptions o;
-  o.levels = 3;         // 161 nodes
-  o.tolerance = 1e-6;   // the traction integral settles long before the residual reaches 1e-8
+  o.nodes = 161;
   return o;
 }
 

@@ -1,9 +1,10 @@
 #pragma once
 // The FAS multigrid machinery shared by the steady and the transient line-contact solvers
-// (Venner & Lubrecht 2000, ch. 6–7): grid hierarchy, relaxation, coarse-grid correction,
-// force balance through H0. The contact state generalises the steady problem of
-// LineContactProblem by the factors of a transient along a gear mesh (seed 004's C_R, C_u,
-// C_w, here relative to the problem's reference contact):
+// (Venner & Lubrecht 2000, ch. 6–8): grid hierarchy, mixed relaxation, coarse grids with
+// coefficients taken from the fine grid, the coarsest grid solved directly in (P, H0), full
+// multigrid and the stop at the discretisation error. The contact state generalises the
+// steady problem of LineContactProblem by the factors of a transient along a gear mesh
+// (seed 004's C_R, C_u, C_w, here relative to the problem's reference contact):
 //   H = H0 + κ·X²/2 − (D/π)∫ln|X − X'|P dX',
 //   d/dX(ε dP/dX) − υ·d(ρ̄H)/dX − (ρ̄H − (ρ̄H)_old)/ΔT = 0,   ∫P dX = F,
 // with κ = R_ref/R, υ = ū/ū_ref, T = t·ū_ref/ℓ and implicit Euler in time.
@@ -26,13 +27,14 @@ struct ContactState {
   /// ρ̄/η̄ and ρ̄ at the same pressure. Frozen during a solve; coarse grids inject them.
   /// Empty: isothermal (all factors 1).
   std::vector<double> flow_factor, wedge_factor;
+  /// Whether the state carries fields on the finest grid (which then must be fixed).
+  [[nodiscard]] bool has_fields() const { return !rho_h_old.empty() || !flow_factor.empty() || !wedge_factor.empty(); }
 };
 
-/// A previous solution to start from instead of full multigrid.
+/// A previous solution to start from instead of full multigrid (same finest grid).
 struct WarmStart {
   std::vector<double> P;
   double H0 = 0.0;
-  double film_scale = 0.0;  ///< typical film for the rigid-scaling H0 update (0: estimate)
 };
 
 class FasMultigrid {
@@ -42,7 +44,7 @@ class FasMultigrid {
   FasMultigrid(const FasMultigrid&) = delete;
   FasMultigrid& operator=(const FasMultigrid&) = delete;
 
-  /// Full multigrid (or the warm start), then cycles to the tolerance; unconverged results
+  /// Full multigrid (or the warm start), then cycles to the stop rule; unconverged results
   /// come back with converged = false.
   EhlResult solve(const std::optional<WarmStart>& warm = std::nullopt);
   /// ρ̄H on the finest grid of the current solution (the next step's (ρ̄H)_old).

@@ -109,6 +109,12 @@ double LineContactProblem::viscosity(double P) const {
   return lubricant::roelands_viscosity(data_.viscosity, roelands_z_, p) / data_.viscosity;
 }
 
+double LineContactProblem::log_viscosity(double P) const {
+  const double p = std::max(P, 0.0) * p_r_;
+  if (data_.viscosity_model == ViscosityModel::barus) return lubricant::barus_log_ratio(data_.pressure_viscosity, p);
+  return lubricant::roelands_log_ratio(data_.viscosity, roelands_z_, p);
+}
+
 double LineContactProblem::density(double P) const {
   if (data_.density_model == DensityModel::incompressible) return 1.0;
   return lubricant::dowson_higginson_density_ratio(std::max(P, 0.0) * p_r_);

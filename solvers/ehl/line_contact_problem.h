@@ -74,6 +74,10 @@ class LineContactProblem {
 
   /// η̄(P) = η/η0 and ρ̄(P) = ρ/ρ0.
   [[nodiscard]] double viscosity(double P) const;
+  /// ln η̄(P): the exponent of viscosity(), finite at pressures where η̄ overflows a double
+  /// (a Barus spike on a fine grid reaches ᾱP > 709), so that ε = ρ̄H³e^{−ln η̄}/λ underflows
+  /// to 0 instead of turning its derivative into NaN.
+  [[nodiscard]] double log_viscosity(double P) const;
   [[nodiscard]] double density(double P) const;
 
  private:

@@ -1,15 +1,20 @@
 #pragma once
 // FAS multigrid solver of the steady isothermal line-contact EHL problem
-// (Venner & Lubrecht, Multilevel Methods in Lubrication, 2000, ch. 6–7):
-//   - uniform grids, n_k = (n_0 − 1)·2^k + 1 nodes, full multigrid from the coarsest;
-//   - Reynolds equation with central Poiseuille and first-order upwind wedge terms
-//     (first order in h: the tests measure the order this gives);
-//   - relaxation: Gauss–Seidel (under-relaxed) where ε/h² ≥ ξ, distributive Jacobi
-//     (changes (−¼, 1, −¼)) where ε/h² < ξ, P ≥ 0 imposed after each change; by default
-//     as line relaxation (all changes of a sweep solved at once, line_relaxation.h), or
-//     point by point;
-//   - the force balance closes through H0 on the coarsest grid with the FAS right-hand side;
+// (Venner & Lubrecht, Multilevel Methods in Lubrication, 2000, ch. 6–8):
+//   - uniform grids, n_k = (n_0 − 1)·2^k + 1 nodes, full multigrid from the coarsest with one
+//     V-cycle per level; levels are added until the estimated discretisation error of H_c
+//     and H_min is below grid.target_error, or the grid is given;
+//   - Reynolds equation with central Poiseuille and second-order upwind wedge terms
+//     (reynolds_stencil.h);
+//   - relaxation by Venner & Lubrecht's mixed scheme: Gauss–Seidel where ε/h² ≥ ξ (with the
+//     piezoviscous response dε/dP in the derivative), distributive Jacobi with the zero-sum
+//     pattern (−½, 1, −½) where it is smaller;
+//   - coarse grids with ε and ρ̄ taken from the fine grid and the fine film injected (FAS);
+//     the coarsest grid solved directly in (P, H0) (coarsest_solve.h);
+//   - the solve stops when the per-cycle change of H_c, H_min and H0 is a small fraction of
+//     its own discretisation-error estimate (or at a residual tolerance, if asked);
 //   - the deformation integral by zero-padded FFT convolution (O(n log n) per sweep).
+#include <algorithm>
 #include <limits>
 #include <string>
 #include <vector>
@@ -18,47 +23,47 @@
 
 namespace gearbench::ehl {
 
+/// V: one coarse-grid visit per cycle (O(N) per cycle); W: two (O(N log N) in 1-D).
 enum class CycleType { V, W };
-/// Line: the changes of a sweep solved together from a banded Jacobian (line_relaxation.h).
-/// Point: one node at a time with the Jacobian diagonal (the scheme before line relaxation,
-/// kept as the fallback of a failed line solve).
-enum class Relaxation { line, point };
+/// When a steady solve is accepted: at its own discretisation error (default), or at a
+/// residual tolerance (the users who want one; warm-started solves, which have no estimate).
+enum class StopRule { discretisation_error, residual };
 
+/// The options of the EHL multigrid: every key's default and allowed range is stated once,
+/// here, and checked by validate().
 struct EhlOptions {
-  int levels = 5;                 ///< grid levels, 641 nodes from 41 (seed 001 uses 6)
-  int coarsest_nodes = 41;        ///< nodes on the coarsest grid (seed 001: 41)
-  CycleType cycle = CycleType::W;  ///< W converges in ~10 cycles where V needs 40–80
-  int pre_sweeps = 2;             ///< relaxations before the coarse-grid correction
-  int post_sweeps = 2;            ///< relaxations after it
-  int coarsest_sweeps = 10;       ///< relaxations (then one H0 update) per coarsest visit
-  int max_cycles = 200;           ///< cap: more is a convergence failure
-  double tolerance = 1e-8;        ///< on the scaled residual and the force balance
-  Relaxation relaxation = Relaxation::line;
-  int line_band = 2;              ///< neighbours of the Jacobian kept in a line solve
-  // Under-relaxation, measured over a suite of 15 (M, L, grid) cases from M 1 to 1000, L 0
-  // to 20 and 641 to 5121 nodes: line relaxation with 0.3 and 0.2 converged 13 of them
-  // (point relaxation with 0.3 and 0.1: 8); 0.5 for Gauss–Seidel lines diverged at high L,
-  // and 0.1 for the Jacobi lines is what M = 1000, L = 0 needs (the solver's fallback).
-  double omega_gauss_seidel = 0.3;
-  double omega_jacobi = 0.2;
-  double h0_damping = 0.15;       ///< H0 ← H0 + c·S·(∫P − F)/F on the coarsest grid
-                                  ///< (S = 1 Hertzian, the film guess in rigid units)
-  double xi_threshold = 1.0;      ///< ε/h² splitting Gauss–Seidel from Jacobi (0.3 and 1
-                                  ///< converge the same suite cases; 1 in fewer cycles)
-  /// Coarse nodes where the injected pressure varies on the coarse mesh's scale are held
-  /// (fas_multigrid.cpp, hold_unresolved): on fine grids the resolved pressure spike (and at
-  /// L = 0 from 10241 nodes the outlet) otherwise drives the coarse problems to divergence.
-  /// Off by default: on 641 nodes it costs up to twice the cycles at high L (M = 10, L = 15:
-  /// 45 against 22) and fails where the plain scheme converges (M = 1, L = 15); the first
-  /// fallback turns it on.
-  bool hold_unresolved = false;
+  int nodes = 0;                  ///< nodes on the finest grid (2^k·(n_0 − 1) + 1)  0 or [9, 1048577]
+  int levels = 0;                 ///< grid levels from coarsest_nodes (not with nodes)  [0, 14]
+                                  ///< neither nodes nor levels: chosen by target_error
+  int coarsest_nodes = 0;         ///< nodes on the coarsest grid; 0: sized by the film   0 or [9, 1025]
+  int max_levels = 10;            ///< cap on the levels target_error adds (16385 nodes) [2, 14]
+  double target_error = 0.01;     ///< estimated relative error of H_c and H_min to reach (0, 0.5]
+  CycleType cycle = CycleType::V;
+  int pre_sweeps = 2;             ///< relaxations before the coarse-grid correction    [0, 20]
+  int post_sweeps = 1;            ///< relaxations after it                             [0, 20]
+  int max_cycles = 60;            ///< cycles on the finest grid before a failure        [1, 100000]
+  StopRule stop = StopRule::discretisation_error;
+  /// Discretisation-error rule: accept when the per-cycle change of H_c, H_min and H0, and
+  /// the force balance, are below this fraction of the error estimate.         (0, 1]
+  double error_fraction = 0.1;
+  double tolerance = 1e-8;        ///< residual rule: scaled residual and force balance (0, 1)
+  // Relaxation, measured over the (M 1–200, L 0–25) map (docs/ehl-model.md): with ω_J 0.5
+  // M 20 L 20 and M 5 L 25 diverge, with 0.4 every point converges; ω_GS 0.6 to 1 and
+  // ξ 0.3 to 3 change the cycle count by less than ω_J does.
+  double omega_gauss_seidel = 0.8;  ///< under-relaxation of Gauss–Seidel changes      (0, 1]
+  double omega_jacobi = 0.4;        ///< under-relaxation of distributive changes      (0, 1]
+  double xi_threshold = 1.0;      ///< ε/h² splitting Gauss–Seidel from Jacobi nodes     (0, 1e6]
   double x_in = 0.0, x_out = 0.0; ///< domain; both 0 picks the problem's default
   bool direct_deformation = false; ///< the O(n²) sum instead of the FFT (the benchmarks' baseline)
 
-  void validate() const;          ///< InputError naming the key
-  /// Point relaxation as it was before line relaxation (ξ 0.3, ω 0.3/0.1): about half the
-  /// cost per sweep of a line sweep (no banded LU), for callers whose contacts it converges.
-  [[nodiscard]] static EhlOptions point_relaxation();
+  void validate() const;          ///< InputError naming the key and its range
+  [[nodiscard]] bool adaptive() const { return levels == 0 && nodes == 0; }
+  /// Nodes on the finest grid of a fixed grid (levels > 0).
+  [[nodiscard]] long finest_nodes() const {
+    return static_cast<long>(std::max(coarsest_nodes, 9) - 1) * (1L << (levels - 1)) + 1;
+  }
+  /// "FMG + V(2,1), ω 0.8/0.4, ξ 1, levels to a 1 % error …; stop at 0.1 of the error estimate".
+  [[nodiscard]] std::string describe() const;
 };
 
 struct EhlResult {
@@ -75,59 +80,44 @@ struct EhlResult {
   double friction_coefficient = 0.0;
   // Diagnostics.
   bool converged = false;
-  /// The scheme that converged (or the last one tried), e.g. "W, line, ω_GS 0.3, ω_J 0.2,
-  /// ξ 1", with "(attempt k)" when earlier schemes failed.
-  std::string cycle_type;
-  int attempts = 1;                        ///< solves tried, the fallbacks included
-  int cycles = 0;
-  double work_units = 0.0;                 ///< finest-grid relaxation sweeps equivalent
+  std::string message;      ///< what stopped the solve, in a sentence
+  std::string scheme;       ///< the options used (EhlOptions::describe)
+  std::string stop_rule;    ///< the rule that accepted (or would have accepted) the solve
+  int levels = 0;           ///< grid levels used
+  int cycles = 0;           ///< cycles on the finest grid after full multigrid
+  double work_units = 0.0;  ///< every relaxation and coarsest solve of every stage, in finest-grid sweeps
+  double work_units_at_error = std::numeric_limits<double>::quiet_NaN();  ///< WU when the stop rule held
+  double convergence_factor = std::numeric_limits<double>::quiet_NaN();   ///< mean per-cycle factor of the residual
   std::vector<double> residual_history;    ///< scaled Reynolds residual per cycle
   std::vector<double> force_history;       ///< |∫P dX − F|/F per cycle
   std::vector<double> seconds_per_level;
   double seconds = 0.0;
-  /// Change of H_min and P_max between the solutions on the two finest grids (relative):
-  /// the discretisation-error estimate. NaN where there is none: a warm-started solve (a
-  /// time step, a thermal iteration, the continuation in α) or a single grid.
+  /// The solver's own discretisation-error estimate of H_c and H_min (relative): the change
+  /// from the next-coarser grid of full multigrid over 2^p − 1 (p = 2). NaN where there is
+  /// none: a warm-started solve (a time step, a thermal iteration) or a single grid.
+  double error_estimate = std::numeric_limits<double>::quiet_NaN();
+  /// Relative change of h_min and p_max from the next-coarser grid (NaN: none).
   double h_min_change = std::numeric_limits<double>::quiet_NaN();
   double p_max_change = std::numeric_limits<double>::quiet_NaN();
   double coarse_h_min = 0.0, coarse_p_max = 0.0;  ///< on the next-coarser grid [m], [Pa]
+  /// Per full-multigrid level: nodes, H_c, H_min (dimensionless) after its cycle.
+  std::vector<double> fmg_nodes, fmg_H_c, fmg_H_min;
 
   [[nodiscard]] std::string summary() const;
-  /// "EHL multigrid did not converge in N cycles (residual, force balance, tolerance) with
-  /// any of k schemes (last: …)": the one error message of a failed steady solve.
-  [[nodiscard]] std::string failure_message(double tolerance) const;
 };
 
 class LineContactSolver {
  public:
   LineContactSolver(const LineContactProblem& problem, EhlOptions options);
-  /// Solves by full multigrid; throws ConvergenceError (with the residual history) when the
-  /// tolerance is not met within max_cycles. A failed solve is repeated with the fallbacks
-  /// of fallback_schemes() before it counts as failed.
+  /// Solves by full multigrid; throws ConvergenceError (with the message and summary) when
+  /// the stop rule is not met within max_cycles.
   [[nodiscard]] EhlResult solve() const;
   /// The same, returning an unconverged result (converged = false) instead of throwing, so
   /// that a caller can write the diagnostics before it reports the failure.
   [[nodiscard]] EhlResult try_solve() const;
 
-  /// The schemes tried in turn: the given options; the same with hold_unresolved toggled
-  /// (holding the coarse nodes of a resolved pressure spike: fine grids at high L); the
-  /// Jacobi under-relaxation halved; the Gauss–Seidel split ξ raised 100× (fine grids at
-  /// L = 0, where ε/h² ≥ 1 reaches into the contact); the same on one level fewer, from a
-  /// coarsest grid of twice the nodes; point relaxation with ω_J halved; the same with
-  /// V-cycles. Each is a complete solve from scratch; all solve the same discrete equations
-  /// on the same finest grid. When all fail, try_solve() continues in α
-  /// (solve_by_continuation).
-  [[nodiscard]] static std::vector<EhlOptions> fallback_schemes(const EhlOptions& options);
-  [[nodiscard]] static std::string describe(const EhlOptions& options);
-
  private:
-  /// The schemes of fallback_schemes() in turn on `problem`, each from scratch.
-  [[nodiscard]] EhlResult solve_with_fallbacks(const LineContactProblem& problem) const;
-  /// The contact solved at α/2, then with α raised step by step to its value, each step
-  /// warm-started from the last: the last resort of try_solve() for piezoviscous contacts.
-  [[nodiscard]] EhlResult solve_by_continuation() const;
-
-  const LineContactProblem& problem_;
+  LineContactProblem problem_;  ///< a copy: the solver outlives no caller's object
   EhlOptions options_;
 };
 

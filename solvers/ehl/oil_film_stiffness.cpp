@@ -65,7 +65,8 @@ LoadStep solve_load_step(const LineContactData& nominal, const EhlOptions& grid,
 
 EhlOptions OilFilmStiffnessOptions::default_grid() {
   EhlOptions o;
-  o.levels = 5;        // 641 nodes
+  o.nodes = 641;
+  o.stop = StopRule::residual;  // a difference of two solves: stopping at the error estimate is too coarse
   o.tolerance = 1e-9;  // Δh_c at δ = 2 % is ~0.3 % of h_c: the solves must be far tighter
   return o;
 }

@@ -10,8 +10,16 @@
 
 namespace gearbench::ehl {
 
+EhlOptions ThermalEhlOptions::default_grid() {
+  EhlOptions o;
+  o.nodes = 641;
+  o.stop = StopRule::residual;  // the isothermal start and the thermal re-solves to one tolerance
+  return o;
+}
+
 void ThermalEhlOptions::validate() const {
   grid.validate();
+  if (grid.adaptive()) throw InputError("grid.levels = 0: the thermal solver needs a fixed grid (grid.nodes or grid.levels)");
   if (max_iterations < 1 || max_iterations > 10000)
     throw InputError(fmt::format("thermal.max_iterations = {}: allowed range is [1, 10000]", max_iterations));
   if (cycles_per_iteration < 1 || cycles_per_iteration > 1000)
@@ -113,7 +121,7 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
     // on a pressure solve that met the multigrid tolerance.
     EhlOptions inner = options_.grid;
     if (!temperature_settled) inner.max_cycles = std::min(inner.max_cycles, options_.cycles_per_iteration);
-    EhlResult next = FasMultigrid(problem, inner, state).solve(WarmStart{current.P, current.H0, 0.0});
+    EhlResult next = FasMultigrid(problem, inner, state).solve(WarmStart{current.P, current.H0});
     r.pressure_cycles += next.cycles;
     r.work_units += next.work_units;
     ++r.iterations;

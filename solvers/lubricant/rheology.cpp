@@ -4,12 +4,15 @@
 
 namespace gearbench::lubricant {
 
-double barus_viscosity(double eta0, double alpha, double p) { return eta0 * std::exp(alpha * p); }
+double barus_log_ratio(double alpha, double p) { return alpha * p; }
 
-double roelands_viscosity(double eta0, double z, double p) {
-  return eta0 * std::exp((std::log(eta0) + roelands_ln_eta_inf) *
-                         (-1.0 + std::pow(1.0 + p / roelands_p0, z)));
+double barus_viscosity(double eta0, double alpha, double p) { return eta0 * std::exp(barus_log_ratio(alpha, p)); }
+
+double roelands_log_ratio(double eta0, double z, double p) {
+  return (std::log(eta0) + roelands_ln_eta_inf) * (-1.0 + std::pow(1.0 + p / roelands_p0, z));
 }
+
+double roelands_viscosity(double eta0, double z, double p) { return eta0 * std::exp(roelands_log_ratio(eta0, z, p)); }
 
 double roelands_z_from_alpha(double eta0, double alpha) {
   return alpha * roelands_p0 / (std::log(eta0) + roelands_ln_eta_inf);

@@ -11,10 +11,14 @@ inline constexpr double roelands_ln_eta_inf = 9.67;
 
 /// Barus (1893): η = η0·exp(α·p).
 double barus_viscosity(double eta0, double alpha, double p);
+/// ln(η/η0) of Barus' law, α·p: finite where η itself overflows (α·p > 709).
+double barus_log_ratio(double alpha, double p);
 
 /// Roelands (1966), as written by Venner & Lubrecht (2000):
 ///   η = η0·exp{(ln η0 + 9.67)·[−1 + (1 + p/p0)^z]},  p0 = 1.96e8 Pa.
 double roelands_viscosity(double eta0, double z, double p);
+/// ln(η/η0) of Roelands' law: finite where η itself overflows.
+double roelands_log_ratio(double eta0, double z, double p);
 
 /// The Roelands index that matches the Barus pressure–viscosity coefficient at p = 0:
 ///   z = α·p0/(ln η0 + 9.67)  (d ln η/dp at p = 0 equals α).

@@ -1,4 +1,4 @@
-// Multigrid line-contact EHL (work in progress) against closed forms: the deformation
+// Multigrid line-contact EHL against closed forms: the deformation
 // operator against its direct sum and the analytic Hertz deformation, the rigid-isoviscous
 // limit against Martin, the dry-contact limit against Hertz, and Moes' film formula.
 #include <algorithm>
@@ -91,42 +91,48 @@ LineContactData rigid_isoviscous() {
   return d;
 }
 
-double martin_constant(int levels) {
-  const auto d = rigid_isoviscous();
-  const LineContactProblem p(d);
+/// Martin's load constant w·h_min/(η0·ū·R) of a solve with the given options (nodes = 0:
+/// the default settings, the grid chosen by the 1 % target).
+EhlResult martin_solve(int nodes) {
+  const LineContactProblem p(rigid_isoviscous());
   EhlOptions o;
-  o.levels = levels;
-  o.max_cycles = 400;
-  const auto r = LineContactSolver(p, o).solve();
+  o.nodes = nodes;
+  if (nodes > 0) o.error_fraction = 0.01;
+  return LineContactSolver(p, o).solve();
+}
+
+double martin_constant(const EhlResult& r) {
+  const auto d = rigid_isoviscous();
   return d.load_per_length * r.h_min / (d.viscosity * d.mean_speed() * d.reduced_radius);
 }
 
-// First-order upwind: the load constant converges as O(h); Richardson extrapolation of 641
-// and 1281 nodes removes that term. What is left: O(h²) and the load lost beyond X_in = −40
-// (4/(4.895·40²) ≈ 5e-4 relative).
+// The issue's bar: at the default settings, within 0.5 %. What the default leaves: its own
+// discretisation error (below the 1 % target, here ~0.1 %) and the load lost beyond
+// X_in = −40 (4/(4.895·40²) ≈ 5e-4 relative).
 const RegisterCheck martin_load(CheckSpec{
     .id = "ehl.martin.load_constant", .section = section, .solver = solver,
     .reference = "Martin (Reynolds outlet), w·h0/(η0·ū·R) = 4.8950",
-    .quantity = "load constant, Richardson-extrapolated from 641 and 1281 nodes", .unit = "-",
+    .quantity = "load constant at the default settings", .unit = "-",
     .tolerance = {0, 5e-3},
-    .justification = "O(h²) remainder after Richardson plus 5e-4 from the truncated inlet",
+    .justification = "issue 19: within 0.5 % at the default settings (the truncated inlet alone takes 5e-4)",
     .tier = Tier::fast, .run = [](const CheckContext&) {
-      const double c5 = martin_constant(5), c6 = martin_constant(6);
-      const double c4 = martin_constant(4);
-      const double order = observed_order(c4, c5, c6);
-      return CheckValue{richardson(c5, c6, 1.0), reference::martin_load_constant,
-                        {{"nodes_321_641_1281", {c4, c5, c6}}, {"observed_order", order}}};
+      const auto r = martin_solve(0);
+      return CheckValue{martin_constant(r), reference::martin_load_constant,
+                        {{"nodes", r.X.size()}, {"work_units", r.work_units}, {"error_estimate", r.error_estimate}}};
     }});
 
 const RegisterCheck martin_order(CheckSpec{
     .id = "ehl.martin.observed_order", .section = section, .solver = solver,
-    .reference = "first-order upwind wedge (stated order 1)",
-    .quantity = "observed order of the load constant, 321/641/1281 nodes", .unit = "-",
-    .tolerance = {0.3, 0},
-    .justification = "the wedge term is first-order upwind; the observed order must be near 1",
+    .reference = "second-order scheme (stated order 2)",
+    .quantity = "observed order of the load constant, 257/513/1025 nodes", .unit = "-",
+    .tolerance = {0.35, 0},
+    .justification = "second-order wedge and Poiseuille terms; the first interior node and the outlet "
+                     "free boundary are first order but carry no pressure to speak of in the rigid limit",
     .tier = Tier::fast, .run = [](const CheckContext&) {
-      const double c4 = martin_constant(4), c5 = martin_constant(5), c6 = martin_constant(6);
-      return CheckValue{observed_order(c4, c5, c6), 1.0};
+      std::vector<double> c;
+      for (int n : {257, 513, 1025}) c.push_back(martin_constant(martin_solve(n)));
+      return CheckValue{observed_order(c), 2.0,
+                        {{"load_constant_257_513_1025", c}, {"richardson", richardson(c, observed_order(c))}}};
     }});
 
 // --- Transient machinery ----------------------------------------------------------------------
@@ -140,7 +146,8 @@ const RegisterCheck transient_identity(CheckSpec{
     .tier = Tier::fast, .run = [](const CheckContext&) {
       const LineContactProblem p(LineContactData::from_moes(20.0, 5.0));
       EhlOptions o;
-      o.levels = 4;
+      o.nodes = 321;
+      o.stop = StopRule::residual;
       o.tolerance = 1e-11;  // both solves far below the check's tolerance
       FasMultigrid steady(p, o, ContactState{});
       const auto s = steady.solve();
@@ -148,7 +155,7 @@ const RegisterCheck transient_identity(CheckSpec{
       state.time_step = 1.0;
       state.rho_h_old = steady.rho_h();
       FasMultigrid step(p, o, state);
-      const auto t = step.solve(WarmStart{s.P, s.H0, 0.0});
+      const auto t = step.solve(WarmStart{s.P, s.H0});
       double worst = 0.0;
       for (std::size_t i = 0; i < s.P.size(); ++i) worst = std::max(worst, std::abs(t.P[i] - s.P[i]));
       return CheckValue{worst, 0.0, {{"cycles", t.cycles}}};
@@ -169,11 +176,11 @@ const RegisterCheck transient_squeeze(CheckSpec{
       const auto d = rigid_isoviscous();
       const LineContactProblem p(d);
       EhlOptions o;
-      o.levels = 6;
+      o.nodes = 1281;
       o.x_in = -20.0;
       o.x_out = 20.0;
       const double H0_old = 1.0, dT = 0.5;
-      const std::size_t n = static_cast<std::size_t>((o.coarsest_nodes - 1) * (1 << (o.levels - 1)) + 1);
+      const std::size_t n = static_cast<std::size_t>(o.nodes);
       const double h = 40.0 / static_cast<double>(n - 1);
       ContactState state;
       state.speed = 0.0;
@@ -187,39 +194,18 @@ const RegisterCheck transient_squeeze(CheckSpec{
       }
       start.front() = start.back() = 0.0;
       FasMultigrid mg(p, o, state);
-      const auto r = mg.solve(WarmStart{start, 0.9 * H0_old, H0_old});
+      const auto r = mg.solve(WarmStart{start, 0.9 * H0_old});
       if (!r.converged) throw std::runtime_error("squeeze step did not converge");
       const double rate = (r.H0 - H0_old) / dT;
       const double closed = -4.0 * p.load() * std::pow(r.H0, 1.5) / (p.lambda() * M_PI * std::sqrt(2.0));
       return CheckValue{rate / closed - 1.0, 0.0, {{"H0", r.H0}, {"cycles", r.cycles}}};
     }});
 
-// --- Grid convergence -------------------------------------------------------------------------
-// M = 10, L = 0 on 257 … 8193 nodes (33 coarsest nodes, 4 … 9 levels).
-
-const RegisterCheck grid_convergence(CheckSpec{
-    .id = "ehl.grid_convergence.order", .section = section, .solver = solver,
-    .reference = "first-order upwind wedge (stated order 1)",
-    .quantity = "observed order of H_c, 2049/4097/8193 nodes, M = 10, L = 0", .unit = "-",
-    .tolerance = {0.15, 0},
-    .justification = "first-order scheme in its asymptotic range: the order of the last three "
-                     "grids must be 1 within the drift seen between successive triples",
-    .tier = Tier::fast, .run = [](const CheckContext&) {
-      const auto g = grid_series(10.0, 0.0, 33);
-      return CheckValue{observed_order(g.H_c), 1.0,
-                        {{"nodes", g.nodes}, {"H_c", g.H_c}, {"H_min", g.H_min}, {"p_max_over_p_h", g.p_max},
-                         {"order_H_min", observed_order(g.H_min)}, {"order_p_max", observed_order(g.p_max)},
-                         {"richardson", {{"H_c", first_order_richardson(g.H_c)}, {"H_min", first_order_richardson(g.H_min)},
-                                         {"p_max_over_p_h", first_order_richardson(g.p_max)}}}}};
-    }});
-
 // --- Hertz limit and Moes ---------------------------------------------------------------------
 
 EhlResult solve_moes(double M, double L) {
   const LineContactProblem p(LineContactData::from_moes(M, L));
-  EhlOptions o;
-  o.levels = 5;
-  return LineContactSolver(p, o).solve();
+  return LineContactSolver(p, EhlOptions{}).solve();
 }
 
 const RegisterCheck hertz_limit(CheckSpec{
@@ -246,11 +232,11 @@ const bool moes_checks = [] {
     Registry::instance().add(CheckSpec{
         .id = fmt::format("ehl.moes.M{}_L{}", pt.M, pt.L), .section = section, .solver = solver,
         .reference = "Moes film formula (film at dp/dx = 0)",
-        .quantity = fmt::format("H = (h/R)·U_Σ^(−1/2) at M = {}, L = {} (641 nodes)", pt.M, pt.L),
+        .quantity = fmt::format("H = (h/R)·U_Σ^(−1/2) at M = {}, L = {} (default settings)", pt.M, pt.L),
         .unit = "-", .tolerance = {0, 0.1},
-        .justification = "Moes' fit to numerical solutions is good to a few per cent; the "
-                         "first-order scheme at 641 nodes adds up to ~5 % (the Martin load "
-                         "constant is 6 % high there), so ±10 %",
+        .justification = "Moes' formula is a fit to numerical solutions of its day; closed forms of this "
+                         "kind are good to 5–20 % (REFERENCE-FACTS), so ±10 %; the solver's own error is "
+                         "below its 1 % target (the Newton reference checks hold it to 0.5 %)",
         .tier = Tier::fast, .run = [pt](const CheckContext&) {
           const auto d = LineContactData::from_moes(pt.M, pt.L);
           const auto r = solve_moes(pt.M, pt.L);
@@ -263,14 +249,21 @@ const bool moes_checks = [] {
 // --- Where the solver converges today -----------------------------------------------------
 
 void add_convergence_table(reports::Report& report) {
-  const auto g = grid_series(10.0, 0.0, 33);
-  ConvergenceTable table("nodes", {"H_c", "H_min", "p_max/p_h"});
-  for (std::size_t i = 0; i < g.nodes.size(); ++i) table.add_row(g.nodes[i], {g.H_c[i], g.H_min[i], g.p_max[i]});
+  const auto g = grid_series(10.0, 0.0, {257, 513, 1025, 2049, 4097, 8193});
+  std::string rows;
+  for (std::size_t i = 0; i < g.nodes.size(); ++i)
+    rows += fmt::format("| {} | {:.6f} | {:.6f} | {:.6f} | {:.1f} |\n", g.nodes[i], g.H_c[i], g.H_min[i], g.p_max[i],
+                        g.work_units[i]);
+  const double order_c = observed_order(g.H_c), order_min = observed_order(g.H_min);
+  rows += fmt::format("| Richardson (2 finest, observed order) | {:.6f} | {:.6f} | | |\n",
+                      richardson(g.H_c, order_c), richardson(g.H_min, order_min));
+  rows += fmt::format("| observed order (3 finest) | {:.3f} | {:.3f} | {:.3f} | |\n", order_c, order_min,
+                      observed_order(g.p_max));
   report.notes.push_back({section, fmt::format(
-      "**Grid convergence** at M = 10, L = 0 (Moes H = {:.4f}), in Moes units and p/p_h:\n\n{}\n"
-      "Richardson values of the two finest grids (first order): H_c {:.6f}, H_min {:.6f}, p_max/p_h {:.6f}.\n",
-      reference::moes_H(10.0, 0.0), table.markdown(), first_order_richardson(g.H_c),
-      first_order_richardson(g.H_min), first_order_richardson(g.p_max))});
+      "**Grid convergence** at M = 10, L = 0 (Moes H = {:.4f}), in Moes units and p/p_h, each grid solved "
+      "to 1 % of its own discretisation-error estimate:\n\n"
+      "| nodes | H_c | H_min | p_max/p_h | work units |\n|---|---|---|---|---|\n{}",
+      reference::moes_H(10.0, 0.0), rows)});
 }
 
 void add_profile_figures(reports::Report& report) {
@@ -290,6 +283,12 @@ void add_profile_figures(reports::Report& report) {
                             film, true});
 }
 
+std::string map_cell(const MapPoint& pt) {
+  if (!pt.in_range) return " out of range (ᾱ > 40) |";
+  if (!pt.converged) return fmt::format(" **not converged** ({:.0f} WU) |", pt.work_units);
+  return fmt::format(" {:.0f} WU, {:.0f} nodes, H {:.3f} |", pt.work_units, pt.nodes, pt.H);
+}
+
 const RegisterSection ehl_section(SectionSpec{
     .id = "ehl", .tier = Tier::fast, .add = [](const CheckContext&, reports::Report& report) {
       add_profile_figures(report);
@@ -299,45 +298,25 @@ const RegisterSection ehl_section(SectionSpec{
       for (const auto& pt : moes_map()) {
         if (pt.M != last_M) rows += fmt::format("{}| {} |", last_M < 0.0 ? "" : "\n", pt.M);
         last_M = pt.M;
-        const std::string attempt = pt.attempts > 1 ? fmt::format(" (attempt {})", pt.attempts) : "";
-        rows += !pt.in_range   ? std::string(" out of range (ᾱ > 40) |")
-                : pt.converged ? fmt::format(" {} cycles{}, H {:.3f} (Moes {:.3f}) |", pt.cycles, attempt, pt.H,
-                                             reference::moes_H(pt.M, pt.L))
-                               : std::string(" **not converged** |");
+        rows += map_cell(pt);
+      }
+      std::string header = "| M |", rule = "|---|";
+      for (int k = 0; k <= 10; ++k) {
+        header += fmt::format(" L = {:g} |", 2.5 * k);
+        rule += "---|";
       }
       report.notes.push_back({section, fmt::format(
-          "**Where the steady solver converges (issue 3).** The FAS solver (641 nodes, W(2,2) cycles, "
-          "line relaxation with under-relaxation 0.3/0.2, the fine film injected into the coarse film "
-          "equation) is held to 1e-8 on the scaled complementarity residual and the force balance "
-          "within 200 cycles. A failed solve is repeated from scratch with the coarse nodes of an "
-          "unresolved pressure spike held; then ω_J 0.1; then ξ = 100; then ξ = 100 from an 81-node "
-          "coarsest grid (one level fewer); then point relaxation; then V-cycles; and last by "
-          "continuation in α (solved at α/2, then α raised in adaptive steps, each started from the "
-          "last solution). The attempt is shown when it was not the first; attempt 8 is the "
-          "continuation. Every in-range point converges (check ehl.relaxation.map_641_nodes). Out of "
-          "range means ᾱ = α·p_h > 40 with Barus (a viscosity "
-          "ratio over e^40), which the input validation refuses (REFERENCE-FACTS).\n\n"
-          "| M | L = 0 | L = 5 | L = 10 | L = 15 | L = 20 | L = 22.5 | L = 25 |\n"
-          "|---|---|---|---|---|---|---|---|\n{}\n", rows)});
+          "**The (M, L) map at the default settings (issue 19).** One scheme: full multigrid from a "
+          "coarsest grid sized by the film, one V(2,1) cycle per level, levels added until the solver's "
+          "own discretisation-error estimate of H_c and H_min is below 1 %, then cycles until the "
+          "algebraic error left is below a tenth of that estimate. Each cell: work units (finest-grid "
+          "sweeps, the coarsest grid's dense solves by their flops), the finest grid reached and Moes' H "
+          "(film at dp/dx = 0). M = 500 and 1000 do not converge today (a coarsest grid of 513–1025 "
+          "nodes is needed for the film, and its dense solve is too costly). Out of range means "
+          "ᾱ = α·p_h > 40 with Barus, which the input validation refuses.\n\n{}\n{}\n{}\n",
+          header, rule, rows)});
     }});
 
 }  // namespace
-
-GridSeries grid_series(double M, double L, int coarsest_nodes) {
-  const auto d = LineContactData::from_moes(M, L);
-  const LineContactProblem p(d);
-  GridSeries g;
-  for (int levels = 4; levels <= 9; ++levels) {
-    EhlOptions o;
-    o.levels = levels;
-    o.coarsest_nodes = coarsest_nodes;
-    const auto r = LineContactSolver(p, o).solve();
-    g.nodes.push_back(static_cast<double>(r.X.size()));
-    g.H_c.push_back(r.h_central * moes_units(d));
-    g.H_min.push_back(r.h_min * moes_units(d));
-    g.p_max.push_back(r.p_max / p.hertz_pressure());
-  }
-  return g;
-}
 
 }  // namespace gearbench::verification

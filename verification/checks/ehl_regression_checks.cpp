@@ -48,7 +48,7 @@ LineContactData data(const Condition& c, ViscosityModel viscosity) {
 EhlResult solve(const LineContactData& d) {
   const LineContactProblem p(d);
   EhlOptions o;
-  o.levels = 5;  // 641 nodes
+  o.nodes = 641;
   return LineContactSolver(p, o).solve();
 }
 

@@ -35,7 +35,7 @@ TransientMeshResult run_seed004(const CheckContext& ctx, int steps, int levels, 
   const geometry::GearPairGeometry g(s.gear_case.gear_pair);
   TransientMeshOptions o;
   o.steps = steps;
-  o.grid.levels = levels;
+  o.grid.nodes = 40 * (1 << (levels - 1)) + 1;  // levels above a 41-node coarsest grid
   o.grid.tolerance = tolerance;
   auto r = TransientMeshEhl(g, *s.gear_case.operating, s.fluid, o).run();
   if (!r.converged) throw std::runtime_error("seed 004 transient EHL: " + r.summary());

@@ -1,0 +1,33 @@
+#pragma once
+// The coarsest grid's problem solved directly in (P, H0): a Newton step of the discrete
+// Reynolds equation (reynolds_stencil.h) with every kernel entry of the film's response,
+// bordered by the force balance h·Σ P_j = g. The film's H0 enters the Reynolds equation
+// through the wedge and squeeze terms and through ε ∝ H³ in the Poiseuille term; so does
+// every pressure, through the deformation: the Jacobian holds both (the caller gives
+// ∂ε/∂H), and the step is a Newton step of the whole coarsest problem. Cavitated nodes (P = 0 whose own change would be negative) are held.
+// Venner & Lubrecht (2000, §8.3) close the force balance by a damped H0 update per coarsest
+// visit; a direct solve needs no damping factor and makes the coarsest grid exact.
+#include <vector>
+
+#include "reynolds_stencil.h"
+
+namespace gearbench::ehl {
+
+/// ∂ε_{i+½}/∂H_i (left) and ∂ε_{i+½}/∂H_{i+1} (right): the flow's response to the film,
+/// through which H0 and, by the deformation, every pressure move the Poiseuille term.
+struct FilmSensitivity {
+  std::vector<double> left, right;
+};
+
+struct CoarsestStep {
+  std::vector<double> dP;  ///< pressure change (zero at the ends and at held nodes)
+  double dH0 = 0.0;        ///< change of the film constant
+};
+
+/// One Newton step: `residual` is f − L(P) at the interior nodes, `force_gap` g − h·Σ P.
+[[nodiscard]] CoarsestStep coarsest_newton_step(const ReynoldsCoefficients& c, const std::vector<double>& P,
+                                                const std::vector<double>& residual,
+                                                const FilmSensitivity& film,
+                                                double force_gap);
+
+}  // namespace gearbench::ehl
