@@ -35,8 +35,18 @@ void EhlOptions::validate() const {
           fmt::format("{}", omega_gauss_seidel), "range is (0, 1]");
   require(omega_jacobi > 0.0 && omega_jacobi <= 1.0, "omega_jacobi", fmt::format("{}", omega_jacobi),
           "range is (0, 1]");
-  require(xi_threshold > 0.0 && xi_threshold <= 1e6, "xi_threshold", fmt::format("{}", xi_threshold),
-          "range is (0, 1e6]");
+  require(relaxation_switch >= 1.0 && relaxation_switch <= 1e3, "relaxation_switch",
+          fmt::format("{}", relaxation_switch), "range is [1, 1000]");
+  require(line_band >= 1 && line_band <= 16, "line_band", std::to_string(line_band), "range is [1, 16]");
+  require(change_limit > 0.0 && change_limit <= 10.0, "change_limit", fmt::format("{}", change_limit),
+          "range is (0, 10]");
+  require(spike_window >= 1 && spike_window <= 32, "spike_window", std::to_string(spike_window), "range is [1, 32]");
+  require(free_boundary_nodes >= 0 && free_boundary_nodes <= 64, "free_boundary_nodes",
+          std::to_string(free_boundary_nodes), "range is [0, 64]");
+  require(free_boundary_sweeps >= 0 && free_boundary_sweeps <= 20, "free_boundary_sweeps",
+          std::to_string(free_boundary_sweeps), "range is [0, 20]");
+  require(free_boundary_window >= 1 && free_boundary_window <= 256, "free_boundary_window",
+          std::to_string(free_boundary_window), "range is [1, 256]");
   require((x_in == 0.0 && x_out == 0.0) || (x_in < 0.0 && x_out > 0.0), "x_in",
           fmt::format("{} (x_out {})", x_in, x_out), "x_in < 0 < x_out, or both 0");
   if (levels > 0)
@@ -55,8 +65,9 @@ std::string EhlOptions::describe() const {
   const std::string rule = stop == StopRule::discretisation_error
                                ? fmt::format("stop at {:g} of the error estimate", error_fraction)
                                : fmt::format("stop at residual {:.0e}", tolerance);
-  return fmt::format("FMG + {}({},{}), ω {:g}/{:g}, ξ {:g}, {}; {}", cycle == CycleType::W ? 'W' : 'V',
-                     pre_sweeps, post_sweeps, omega_gauss_seidel, omega_jacobi, xi_threshold, grid, rule);
+  return fmt::format("FMG + {}({},{}), ω {:g}/{:g}, κ {:g}, lines ±{}, |Δ ln ε| ≤ {:g}, {}; {}",
+                     cycle == CycleType::W ? 'W' : 'V', pre_sweeps, post_sweeps, omega_gauss_seidel, omega_jacobi,
+                     relaxation_switch, line_band, change_limit, grid, rule);
 }
 
 std::string EhlResult::summary() const {

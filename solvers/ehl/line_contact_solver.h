@@ -2,15 +2,18 @@
 // FAS multigrid solver of the steady isothermal line-contact EHL problem
 // (Venner & Lubrecht, Multilevel Methods in Lubrication, 2000, ch. 6–8):
 //   - uniform grids, n_k = (n_0 − 1)·2^k + 1 nodes, full multigrid from the coarsest with one
-//     V-cycle per level; levels are added until the estimated discretisation error of H_c
+//     W-cycle per level; levels are added until the estimated discretisation error of H_c
 //     and H_min is below grid.target_error, or the grid is given;
 //   - Reynolds equation with central Poiseuille and second-order upwind wedge terms
 //     (reynolds_stencil.h);
-//   - relaxation by Venner & Lubrecht's mixed scheme: Gauss–Seidel where ε/h² ≥ ξ (with the
-//     piezoviscous response dε/dP in the derivative), distributive Jacobi with the zero-sum
-//     pattern (−½, 1, −½) where it is smaller;
-//   - coarse grids with ε and ρ̄ taken from the fine grid and the fine film injected (FAS);
-//     the coarsest grid solved directly in (P, H0) (coarsest_solve.h);
+//   - relaxation: Jacobi lines (distributive, zero-sum pattern (−½, 1, −½)) where the film's
+//     kernel response matters, then point Gauss–Seidel (with the piezoviscous response dε/dP
+//     in the derivative) where the Poiseuille term dominates; every change limited to
+//     |Δ ln ε| ≤ change_limit; local Newton at the pressure spike and local sweeps at the
+//     outlet's free boundary;
+//   - coarse grids with their own ε and ρ̄ and the fine film injected (FAS); the coarsest grid
+//     solved directly in (P, H0) (coarsest_solve.h);
+// The design and its measurements: docs/research/ehl-multigrid-rebuild.md.
 //   - the solve stops when the per-cycle change of H_c, H_min and H0 is a small fraction of
 //     its own discretisation-error estimate (or at a residual tolerance, if asked);
 //   - the deformation integral by zero-padded FFT convolution (O(n log n) per sweep).
@@ -38,7 +41,9 @@ struct EhlOptions {
   int coarsest_nodes = 0;         ///< nodes on the coarsest grid; 0: sized by the film   0 or [9, 1025]
   int max_levels = 10;            ///< cap on the levels target_error adds (16385 nodes) [2, 14]
   double target_error = 0.01;     ///< estimated relative error of H_c and H_min to reach (0, 0.5]
-  CycleType cycle = CycleType::V;
+  /// W: V-cycles degrade with depth on live coarse grids (0.54 → 0.79 from 2 to 7 levels),
+  /// W-cycles do not (0.42) (docs/research/ehl-multigrid-rebuild.md, eighth session).
+  CycleType cycle = CycleType::W;
   int pre_sweeps = 2;             ///< relaxations before the coarse-grid correction    [0, 20]
   int post_sweeps = 1;            ///< relaxations after it                             [0, 20]
   int max_cycles = 60;            ///< cycles on the finest grid before a failure        [1, 100000]
@@ -47,12 +52,31 @@ struct EhlOptions {
   /// the force balance, are below this fraction of the error estimate.         (0, 1]
   double error_fraction = 0.1;
   double tolerance = 1e-8;        ///< residual rule: scaled residual and force balance (0, 1)
-  // Relaxation, measured over the (M 1–200, L 0–25) map (docs/ehl-model.md): with ω_J 0.5
-  // M 20 L 20 and M 5 L 25 diverge, with 0.4 every point converges; ω_GS 0.6 to 1 and
-  // ξ 0.3 to 3 change the cycle count by less than ω_J does.
+  // Relaxation (docs/research/ehl-multigrid-rebuild.md, eighth to tenth sessions).
   double omega_gauss_seidel = 0.8;  ///< under-relaxation of Gauss–Seidel changes      (0, 1]
-  double omega_jacobi = 0.4;        ///< under-relaxation of distributive changes      (0, 1]
-  double xi_threshold = 1.0;      ///< ε/h² splitting Gauss–Seidel from Jacobi nodes     (0, 1e6]
+  /// Under-relaxation of the Jacobi line changes: 0.4 converged the map; 1.0 over-relaxes
+  /// (eighth session).                                                                  (0, 1]
+  double omega_jacobi = 0.4;
+  /// κ: Gauss–Seidel only where the Poiseuille diagonal exceeds κ × the wedge term's own;
+  /// scale-free, unlike ε/h² ≥ ξ, which sent more contact nodes to Gauss–Seidel on finer
+  /// grids and stalled (20, 5) on 2561 nodes (tenth session).                       [1, 1e3]
+  double relaxation_switch = 10.0;
+  /// Half-bandwidth of a Jacobi line's Jacobian: 3 removed the contact's complex modes
+  /// (eighth session; the plain banded solve without distribution fails).             [1, 16]
+  int line_band = 3;
+  /// Largest |Δ ln ε| = |d ln ε/dP·ΔP| of one change of P: 0.5 keeps every change in the
+  /// exponential's linear range; 3 and 1 left runaways (tenth session).              (0, 10]
+  double change_limit = 0.5;
+  /// Nodes either side of the pressure spike solved by local Newton after post-smoothing
+  /// and after each FMG interpolation: ±2 and ±4 measured alike, ±4 kept (eighth session).  [1, 32]
+  int spike_window = 4;
+  /// Pressurised nodes next to the outlet that get no coarse-grid correction (the free
+  /// boundary is the fine grid's to place; eighth session).                           [0, 64]
+  int free_boundary_nodes = 4;
+  /// Extra sweeps over the last free_boundary_window pressurised nodes after each cycle:
+  /// 4 over 16 ended the period-2 oscillation at (20, 10) on 4097 nodes (eighth session).
+  int free_boundary_sweeps = 4;   ///<                                                  [0, 20]
+  int free_boundary_window = 16;  ///<                                                  [1, 256]
   double x_in = 0.0, x_out = 0.0; ///< domain; both 0 picks the problem's default
   bool direct_deformation = false; ///< the O(n²) sum instead of the FFT (the benchmarks' baseline)
 
@@ -62,7 +86,7 @@ struct EhlOptions {
   [[nodiscard]] long finest_nodes() const {
     return static_cast<long>(std::max(coarsest_nodes, 9) - 1) * (1L << (levels - 1)) + 1;
   }
-  /// "FMG + V(2,1), ω 0.8/0.4, ξ 1, levels to a 1 % error …; stop at 0.1 of the error estimate".
+  /// "FMG + W(2,1), ω 0.8/0.4, κ 10, lines ±3, |Δ ln ε| ≤ 0.5, levels to a 1 % error …; stop at 0.1 of the error estimate".
   [[nodiscard]] std::string describe() const;
 };
 

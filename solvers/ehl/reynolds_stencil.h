@@ -8,7 +8,6 @@
 // in Lubrication, 2000, §8.2): (1.5·ρ̄H_i − 2·ρ̄H_{i−1} + 0.5·ρ̄H_{i−2})/h, first order,
 // (ρ̄H_1 − ρ̄H_0)/h, at the first interior node where no second upstream node exists.
 #include <array>
-#include <cstdlib>
 #include <cstddef>
 #include <vector>
 
@@ -18,8 +17,7 @@ namespace gearbench::ehl {
 
 /// Weights w_m of ρ̄H_{i−m}, m = 0, 1, 2, at node i.
 [[nodiscard]] inline std::array<double, 3> wedge_weights(std::size_t i) {
-  static const bool first = std::getenv("VL_FIRST") != nullptr;
-  if (i < 2 || first) return {1.0, -1.0, 0.0};
+  if (i < 2) return {1.0, -1.0, 0.0};
   return {1.5, -2.0, 0.5};
 }
 
