@@ -1,8 +1,9 @@
 #pragma once
 // The FAS multigrid machinery shared by the steady and the transient line-contact solvers
-// (Venner & Lubrecht 2000, ch. 6–8): grid hierarchy, mixed relaxation, coarse grids with
-// coefficients taken from the fine grid, the coarsest grid solved directly in (P, H0), full
-// multigrid and the stop at the discretisation error. The contact state generalises the
+// (Venner & Lubrecht 2000, ch. 6–8): grid hierarchy, relaxation by Jacobi lines and
+// Gauss–Seidel, local treatment of the pressure spike and the free boundary, coarse grids with
+// their own coefficients, the coarsest grid solved directly in (P, H0), full multigrid and the
+// stop at the discretisation error (the internals: fas_multigrid_impl.h). The contact state generalises the
 // steady problem of LineContactProblem by the factors of a transient along a gear mesh
 // (seed 004's C_R, C_u, C_w, here relative to the problem's reference contact):
 //   H = H0 + κ·X²/2 − (D/π)∫ln|X − X'|P dX',

@@ -1,0 +1,87 @@
+// The coarsest grid: the start (Hertzian guess, homotopy in the piezoviscous exponent) and the
+// strict-descent Newton solve in (P, H0) of each visit (coarsest_solve.h).
+#include "fas_multigrid_impl.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace gearbench::ehl {
+
+void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance) {
+  const auto start = std::chrono::steady_clock::now();
+  double merit = coarsest_merit(l);
+  for (int s = 0; s < steps; ++s) {
+    const CoarsestStep step =
+        coarsest_newton_step(coefficients(l), l.P, residuals(l), film_sensitivity(l), l.g - integral(l));
+    node_sweeps_ += dense_step_cost * std::pow(static_cast<double>(l.n), 3);
+    // Backtracking: the largest of 1, ½, ¼, … that lowers the merit; none does: the solve
+    // keeps its last iterate (strict descent: a Newton step on a live coarse grid can
+    // otherwise leave the region where its problem is meaningful, eighth session).
+    const std::vector<double> P0 = l.P;
+    const double H00 = H0_;
+    double theta = 1.0, trial = merit;
+    for (int halving = 0; halving <= max_halvings; ++halving, theta *= 0.5) {
+      for (std::size_t i = 1; i + 1 < l.n; ++i) l.P[i] = std::max(0.0, P0[i] + theta * step.dP[i]);
+      H0_ = H00 + theta * step.dH0;
+      trial = coarsest_merit(l);
+      if (trial < merit) break;
+    }
+    if (!(trial < merit)) {
+      l.P = P0;
+      H0_ = H00;
+      break;
+    }
+    merit = trial;
+    double largest = 0.0, size = 1e-300;
+    for (std::size_t i = 1; i + 1 < l.n; ++i) {
+      largest = std::max(largest, std::abs(l.P[i] - P0[i]));
+      size = std::max(size, l.P[i]);
+    }
+    if (largest <= tolerance * size && std::abs(H0_ - H00) <= tolerance * std::max(std::abs(H0_), 1.0)) break;
+  }
+  update_film(l);
+  l.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double FasMultigrid::Impl::coarsest_merit(Level& l) {
+  update_film(l);
+  update_coefficients(l);
+  node_sweeps_ += static_cast<double>(l.n);
+  const auto r = residuals(l);
+  double sum = 0.0;
+  for (std::size_t i = 1; i + 1 < l.n; ++i) {
+    const double part = l.P[i] > 0.0 ? r[i] : std::min(r[i], 0.0);
+    sum += part * part;
+  }
+  const double gap = (l.g - integral(l)) / l.h;
+  return sum + gap * gap;
+}
+
+void FasMultigrid::Impl::start_on_coarsest() {
+  Level& l = *levels_.front();
+  make_finest(l);
+  initial_guess(l);
+  const double exponent_at_hertz = problem_.log_viscosity(problem_.hertz_pressure() / problem_.pressure_scale());
+  const int stages = std::max(1, static_cast<int>(std::ceil(exponent_at_hertz / homotopy_step)));
+  for (int s = 0; s <= stages; ++s) {
+    viscosity_exponent_ = static_cast<double>(s) / stages;
+    solve_coarsest(l, coarsest_steps_per_stage, s == stages ? coarsest_tolerance : homotopy_tolerance);
+  }
+  viscosity_exponent_ = 1.0;
+}
+
+void FasMultigrid::Impl::initial_guess(Level& l) {
+  const double amplitude = 2.0 * state_.load / pi;
+  for (std::size_t i = 0; i < l.n; ++i) l.P[i] = amplitude * std::sqrt(std::max(0.0, 1.0 - l.X[i] * l.X[i]));
+  l.P.front() = l.P.back() = 0.0;
+  H0_ = 0.0;
+  update_film(l);
+  double h_in_contact = l.H[0];
+  for (std::size_t i = 0; i < l.n; ++i)
+    if (std::abs(l.X[i]) < 1.0) h_in_contact = std::min(h_in_contact, l.H[i]);
+  H0_ = film_estimate() - h_in_contact;
+  update_film(l);
+}
+
+}  // namespace gearbench::ehl

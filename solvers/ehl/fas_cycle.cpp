@@ -1,0 +1,110 @@
+// The multigrid cycles: the FAS coarse problem (restriction), the coarse-grid correction, V/W
+// cycles, full multigrid with its interpolation, and the warm start (Venner & Lubrecht 2000, ch. 6).
+#include "fas_multigrid_impl.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace gearbench::ehl {
+
+void FasMultigrid::Impl::cycle(std::size_t k) {
+  Level& fine = *levels_[k];
+  if (k == 0) {
+    solve_coarsest(fine, coarsest_steps_per_visit, coarsest_tolerance);
+    return;
+  }
+  for (int s = 0; s < o_.pre_sweeps; ++s) relax(fine);
+  Level& coarse = *levels_[k - 1];
+  restrict_problem(fine, coarse);
+  const std::vector<double> injected = coarse.P;
+  const int gamma = o_.cycle == CycleType::W ? 2 : 1;
+  for (int c = 0; c < gamma; ++c) cycle(k - 1);
+  correct(coarse, injected, fine);
+  for (int s = 0; s < o_.post_sweeps; ++s) relax(fine);
+  relax_spike(fine);
+  relax_free_boundary(fine);
+}
+
+void FasMultigrid::Impl::correct(const Level& coarse, const std::vector<double>& injected, Level& fine) const {
+  std::vector<double> correction(fine.n, 0.0);
+  for (std::size_t I = 0; I + 1 < coarse.n; ++I) {
+    const double d0 = coarse.P[I] - injected[I];
+    const double d1 = coarse.P[I + 1] - injected[I + 1];
+    correction[2 * I] = d0;
+    correction[2 * I + 1] = 0.5 * (d0 + d1);
+  }
+  // Where to correct is decided on the pressure before the correction.
+  const std::size_t last = last_pressurised(fine.P);
+  const auto held = static_cast<std::size_t>(o_.free_boundary_nodes);
+  std::vector<char> corrected(fine.n, 0);
+  for (std::size_t i = 1; i + 1 < fine.n; ++i)
+    corrected[i] = fine.P[i - 1] > 0.0 && fine.P[i] > 0.0 && fine.P[i + 1] > 0.0 && i + held <= last;
+  for (std::size_t i = 1; i + 1 < fine.n; ++i)
+    if (corrected[i]) fine.P[i] = std::max(0.0, fine.P[i] + limit_change(fine, i, correction[i]));
+}
+
+void FasMultigrid::Impl::restrict_problem(Level& fine, Level& coarse) {
+  update_film(fine);
+  update_coefficients(fine);
+  std::vector<double> r = residuals(fine);
+  for (std::size_t i = 1; i + 1 < fine.n; ++i)
+    if (fine.P[i] <= 0.0) r[i] = 0.0;
+  for (std::size_t I = 0; I < coarse.n; ++I) coarse.P[I] = fine.P[2 * I];
+  coarse.film_correction.clear();
+  update_film(coarse);
+  coarse.film_correction.resize(coarse.n);
+  for (std::size_t I = 0; I < coarse.n; ++I) {
+    coarse.film_correction[I] = fine.H[2 * I] - coarse.H[I];
+    coarse.H[I] = fine.H[2 * I];
+  }
+  update_coefficients(coarse);
+  std::fill(coarse.f.begin(), coarse.f.end(), 0.0);
+  for (std::size_t I = 1; I + 1 < coarse.n; ++I)
+    coarse.f[I] = operator_at(coarse, I) + 0.25 * (r[2 * I - 1] + 2.0 * r[2 * I] + r[2 * I + 1]);
+  coarse.g = integral(coarse) + (fine.g - integral(fine));
+}
+
+void FasMultigrid::Impl::full_multigrid(EhlResult& r) {
+  start_on_coarsest();
+  record_fmg_level(r, 0);
+  for (std::size_t k = 1;; ++k) {
+    if (k == levels_.size()) {
+      if (!o_.adaptive() || (k >= 3 && r.error_estimate <= o_.target_error) ||
+          static_cast<int>(k) >= o_.max_levels)
+        break;
+      add_level();
+    }
+    interpolate_solution(*levels_[k - 1], *levels_[k]);
+    make_finest(*levels_[k]);
+    relax_spike(*levels_[k]);  // the cubic interpolation of a resolved spike overshoots (eighth session)
+    cycle(k);
+    record_fmg_level(r, k);
+    // With the grid chosen by the error target, a level whose film is still negative (heavy
+    // loads on coarse grids: no estimate) is not the end: finer levels may resolve it
+    // (tenth session, (1000, 0) positive from 2049 nodes). A fixed grid stops there.
+    if (!std::isfinite(r.error_estimate) && !o_.adaptive()) break;
+  }
+}
+
+void FasMultigrid::Impl::interpolate_solution(const Level& coarse, Level& fine) {
+  for (std::size_t I = 0; I < coarse.n; ++I) fine.P[2 * I] = coarse.P[I];
+  for (std::size_t I = 0; I + 1 < coarse.n; ++I) {
+    const double value =
+        I >= 1 && I + 2 < coarse.n
+            ? (-coarse.P[I - 1] + 9.0 * coarse.P[I] + 9.0 * coarse.P[I + 1] - coarse.P[I + 2]) / 16.0
+            : 0.5 * (coarse.P[I] + coarse.P[I + 1]);
+    fine.P[2 * I + 1] = std::max(0.0, value);
+  }
+}
+
+void FasMultigrid::Impl::start_from(const WarmStart& warm) {
+  Level& fine = *levels_.back();
+  if (warm.P.size() != fine.n) throw std::invalid_argument("WarmStart::P must hold the finest grid");
+  fine.P = warm.P;
+  H0_ = warm.H0;
+  make_finest(fine);
+  update_film(fine);
+}
+
+}  // namespace gearbench::ehl

@@ -1,0 +1,76 @@
+// The two grid-scale features no coarse grid holds, treated locally on the fine grid (Brandt's
+// local relaxation of singularities): the Barus pressure spike and the outlet's free boundary
+// (docs/research/ehl-multigrid-rebuild.md, eighth session).
+#include "fas_multigrid_impl.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Dense>
+
+namespace gearbench::ehl {
+
+void FasMultigrid::Impl::relax_spike(Level& l) {
+  constexpr int steps = 2;
+  const auto w = static_cast<std::size_t>(o_.spike_window);
+  update_film(l);
+  update_coefficients(l);
+  const auto s = spike_index(l.P);
+  const std::size_t a = s > w ? s - w : 1;
+  const std::size_t b = std::min(l.n - 2, s + w);
+  const std::size_t m = b - a + 1;
+  const auto merit = [&]() {
+    double sum = 0.0;
+    for (std::size_t i = a; i <= b; ++i) {
+      const double r = l.f[i] - operator_at(l, i);
+      const double part = l.P[i] > 0.0 ? r : std::min(r, 0.0);
+      sum += part * part;
+    }
+    return sum;
+  };
+  for (int st = 0; st < steps; ++st) {
+    const auto c = coefficients(l);
+    const auto fs = film_sensitivity(l);
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(m, m);
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
+    const double h2 = l.h * l.h;
+    for (std::size_t i = a; i <= b; ++i) {
+      const double r = l.f[i] - operator_at(l, i);
+      const auto row = static_cast<Eigen::Index>(i - a);
+      if (l.P[i] <= 0.0 && r / c.jacobian(i, i) <= 0.0) { A(row, row) = 1.0; continue; }
+      const double q_minus = (l.P[i - 1] - l.P[i]) / h2, q_plus = (l.P[i + 1] - l.P[i]) / h2;
+      const double dH_prev = fs.left[i - 1] * q_minus;
+      const double dH_here = fs.right[i - 1] * q_minus + fs.left[i] * q_plus;
+      const double dH_next = fs.right[i] * q_plus;
+      const auto K = [&](std::size_t k, std::size_t j) { return l.deformation.kernel(k > j ? k - j : j - k); };
+      for (std::size_t j = a; j <= b; ++j) {
+        const double through_film = -c.film_factor * (dH_prev * K(i - 1, j) + dH_here * K(i, j) + dH_next * K(i + 1, j));
+        A(row, static_cast<Eigen::Index>(j - a)) = c.jacobian(i, j) + through_film;
+      }
+      rhs(row) = r;
+    }
+    const Eigen::VectorXd x = A.partialPivLu().solve(rhs);
+    if (!x.allFinite()) return;
+    const std::vector<double> P0 = l.P;
+    const double m0 = merit();
+    double theta = 1.0;
+    for (int hv = 0; hv <= 6; ++hv, theta *= 0.5) {
+      for (std::size_t i = a; i <= b; ++i) l.P[i] = std::max(0.0, P0[i] + theta * x(static_cast<Eigen::Index>(i - a)));
+      update_film(l);
+      update_coefficients(l);
+      if (merit() < m0) break;
+      if (hv == 6) { l.P = P0; update_film(l); update_coefficients(l); return; }
+    }
+  }
+}
+
+void FasMultigrid::Impl::relax_free_boundary(Level& l) {
+  constexpr std::size_t beyond = 4;  // cavitated nodes the free boundary may move into
+  const std::size_t last = last_pressurised(l.P);
+  const auto w = static_cast<std::size_t>(o_.free_boundary_window);
+  const std::size_t a = last > w ? last - w : 1;
+  const std::size_t b = std::min(l.n - 1, last + beyond);
+  for (int s = 0; s < o_.free_boundary_sweeps; ++s) relax(l, a, b);
+}
+
+}  // namespace gearbench::ehl

@@ -1,0 +1,315 @@
+#pragma once
+// The FAS multigrid's internals (fas_multigrid.h is the interface), one class whose parts live in
+// files by responsibility:
+//   fas_multigrid.cpp        the hierarchy of grids and the solve's entry;
+//   fas_level.cpp            a level's film, coefficients, operator and residuals;
+//   fas_relaxation.cpp       the relaxation sweep (Jacobi lines, Gauss–Seidel, change limit);
+//   fas_local_treatments.cpp the spike's local Newton solve and the free boundary's sweeps;
+//   fas_coarsest.cpp         the start and the direct solve on the coarsest grid;
+//   fas_cycle.cpp            restriction, correction, cycles and full multigrid;
+//   fas_stop.cpp             the error estimate, the stop rules and the result's figures.
+// The design and the measurements behind it: docs/research/ehl-multigrid-rebuild.md.
+#include <chrono>
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "coarsest_solve.h"
+#include "deformation.h"
+#include "fas_multigrid.h"
+#include "reynolds_stencil.h"
+
+namespace gearbench::ehl {
+
+class FasMultigrid::Impl {
+ public:
+  Impl(const LineContactProblem& problem, const EhlOptions& o, ContactState state);
+  EhlResult solve(const std::optional<WarmStart>& warm);
+
+  [[nodiscard]] std::vector<double> rho_h();
+
+ private:
+  static constexpr double pi = std::numbers::pi;
+  /// Order of the discretisation (second-order wedge, central Poiseuille): the error estimate
+  /// from two grids is their difference over 2^p − 1.
+  static constexpr double order = 2.0;
+  /// Newton steps of the coarsest grid per visit within a cycle (each visit starts from the
+  /// last one's solution: two steps meet it to rounding where it is smooth).
+  static constexpr int coarsest_steps_per_visit = 3;
+  /// Newton steps per stage of the start on the coarsest grid.
+  static constexpr int coarsest_steps_per_stage = 30;
+  /// Relative change of P and H0 at which a coarsest-grid Newton solve stops; the stages of
+  /// the start before the last need only be close enough to start the next.
+  static constexpr double coarsest_tolerance = 1e-8;
+  static constexpr double homotopy_tolerance = 1e-3;
+  /// The largest coarsest grid: its dense (P, H0) solve costs ~n³/3 multiply–adds.
+  static constexpr std::size_t max_coarsest_nodes = 1025;
+  /// Halvings of a coarsest-grid Newton step before it is taken as it is.
+  static constexpr int max_halvings = 6;
+  /// Rise of ln η̄ at the Hertz pressure per stage of the start.
+  static constexpr double homotopy_step = 8.0;
+  /// A dense Newton step on n nodes is counted as n³/150 node-sweeps: its LU takes ~n³/3
+  /// multiply–adds, a banded line sweep with the FFT film ~50 per node.
+  static constexpr double dense_step_cost = 1.0 / 150.0;
+
+  /// One grid of the hierarchy with its unknowns, coefficients and FAS right-hand sides.
+  struct Level {
+    Level(std::size_t nodes, double x_in, double x_out)
+        : n(nodes), h((x_out - x_in) / static_cast<double>(nodes - 1)), deformation(nodes, h),
+          X(nodes), P(nodes, 0.0), H(nodes, 0.0), W(nodes, 0.0), rho(nodes, 1.0), eps_face(nodes - 1, 0.0),
+          f(nodes, 0.0), flow_factor(nodes, 1.0), wedge_factor(nodes, 1.0) {
+      for (std::size_t i = 0; i < n; ++i) X[i] = x_in + static_cast<double>(i) * h;
+    }
+    std::size_t n;
+    double h;
+    Deformation deformation;
+    std::vector<double> X, P, H, W, rho;
+    std::vector<double> eps_face;  ///< ε_{i+½}
+    std::vector<double> f;         ///< FAS right-hand side of the Reynolds equation
+    std::vector<double> flow_factor, wedge_factor;  ///< thermal film factors (1: isothermal)
+    std::vector<double> rho_h_old;  ///< ρ̄H of the previous time step (transient only)
+    /// Every grid's ε and ρ̄ are recomputed from its own P and H ("live" coarse grids, as
+    /// Venner & Lubrecht): coefficients frozen from the fine grid lack the piezoviscous
+    /// response e^{ᾱP} and halve the two-grid factor's quality (docs/research/
+    /// ehl-multigrid-rebuild.md, eighth session: 0.53 frozen against 0.36 live at (20, 10)).
+    std::vector<double> rho_slope;      ///< dρ̄/dP at the nodes
+    std::vector<double> eps_log_slope;  ///< d ln ε/dP at the nodes (the piezoviscous and density response)
+    std::vector<double> eps;            ///< ε at the nodes
+    std::vector<double> eps_face_dP_left, eps_face_dP_right;  ///< ∂ε_{i+½}/∂P_i, ∂ε_{i+½}/∂P_{i+1}
+    /// FAS right-hand side of the film equation on a coarse grid: the injected fine film minus
+    /// the coarse film of the injected pressure (Venner & Lubrecht 2000, §6.4).
+    std::vector<double> film_correction;
+    double g = 0.0;  ///< FAS right-hand side of the force balance
+    double seconds = 0.0;
+  };
+
+  /// The figures the stop rule watches, dimensionless.
+  struct Watched {
+    double H_c = 0.0, H_min = 0.0, H0 = 0.0;
+  };
+
+  // --- hierarchy (fas_multigrid.cpp) ---------------------------------------------------
+  void add_level();
+  /// The coarsest grid: as given, or the fewest nodes, 32·2^k + 1, whose mesh resolves
+  /// both the pressure zone (h ≤ 1/4 of the Hertz half-width in Hertzian scaling; h ≤ the
+  /// rigid-isoviscous length in rigid scaling, whose domain spans 43 of them) and the film: the discretisation error of the film, a
+  /// difference of O(1) terms (H0, X²/2 and the deformation), is O(h²), so h ≤ √H_est keeps
+  /// the coarse film positive (issue 19: at M = 1000 a 41-node coarsest grid has a negative
+  /// film, H_est ≈ 2.6e-4 in Hertzian units). H_est is Moes' isoviscous film.
+  [[nodiscard]] std::size_t coarsest_nodes() const;
+  /// For a given finest grid: the levels down to the coarsest grid that is at least as fine
+  /// as the sized one (coarsest_ is set to it). n − 1 = (n_0 − 1)·2^(levels − 1).
+  int levels_for_finest(std::size_t nodes);
+  /// Moes' film from the rigid- and elastic-isoviscous asymptotes (Moes 1992, line contact),
+  /// in the problem's film units: the start's H0 and the coarsest grid's film scale.
+  [[nodiscard]] double film_estimate() const;
+  /// The transient's (ρ̄H)_old and the thermal factors of the finest grid, injected into
+  /// the coarser ones.
+  void inject_fields();
+
+  // --- level state (fas_level.cpp) --------------------------------------------
+  void update_film(Level& l);
+
+  /// ε = ρ̄H³/(η̄λ) at the nodes and faces (ε_{i+½} the mean of the nodes') and ρ̄, from the
+  /// grid's own P and H; ln η̄ rather than η̄, so that ε underflows to 0 where η̄ would
+  /// overflow (ᾱP > 709 at a fine-grid Barus spike).
+  void update_coefficients(Level& l);
+
+  /// dρ̄/dP by a central difference.
+  [[nodiscard]] double density_slope(double P) const;
+
+  /// d ln(ρ̄/η̄^s)/dP by a central difference (the rheology laws are smooth for P > 0).
+  [[nodiscard]] double eps_log_slope(double P) const;
+
+  /// ∂ε_{i+½}/∂H_i and ∂ε_{i+½}/∂H_{i+1} (ε ∝ H³).
+  [[nodiscard]] static FilmSensitivity film_sensitivity(const Level& l);
+
+  [[nodiscard]] ReynoldsCoefficients coefficients(const Level& l) const;
+
+  /// ∂ε_{i+½}/∂P_i and ∂ε_{i+½}/∂P_{i+1} of a live grid, ε_{i+½} = (ε_i + ε_{i+1})/2, from
+  /// the slopes d ln ε/dP at the nodes.
+  static void eps_face_derivatives(Level& l);
+
+  /// The discrete Reynolds operator at interior node i (reynolds_stencil.h).
+  [[nodiscard]] double operator_at(const Level& l, std::size_t i) const;
+
+  [[nodiscard]] std::vector<double> residuals(const Level& l) const;
+
+  [[nodiscard]] static double integral(const Level& l);
+
+  /// Residual of the complementarity problem P ≥ 0, r = f − L(P) ≥ 0 (J < 0), P·r = 0:
+  /// the mean of |min(P_i·|J_ii|, r_i)| over the interior, scaled by the largest wedge term.
+  /// It vanishes exactly at a solution, cavitated nodes included.
+  [[nodiscard]] double scaled_residual(Level& l);
+
+  /// A grid becomes the finest of the cycles: its own coefficients, no FAS right-hand sides.
+  void make_finest(Level& l);
+
+  [[nodiscard]] static double film_at_centre(const Level& l);
+
+  // --- relaxation (fas_relaxation.cpp) ----------------------------------------
+  /// One relaxation sweep (Venner & Lubrecht 2000, §7.3, in one dimension, with the changes
+  /// measured in docs/research/ehl-multigrid-rebuild.md): the Jacobi nodes first, each run of
+  /// consecutive ones solved simultaneously as a line and its changes distributed with the
+  /// zero-sum pattern (−½, 1, −½); then point Gauss–Seidel on the others, which sees the
+  /// lines' changes and film. Every change is limited to the exponential's linear range
+  /// (limit_change); P ≥ 0. The film of the next nodes follows a Gauss–Seidel change at once
+  /// through the kernel's near entries; the full film is recomputed after each pass.
+  void relax(Level& l, std::size_t first = 1, std::size_t end = 0);
+
+  /// The scale-free relaxation switch: node i is relaxed by Gauss–Seidel where the Poiseuille
+  /// diagonal (ε_{i−½} + ε_{i+½})/h² exceeds κ × the wedge term's own diagonal (the film's
+  /// kernel response at frozen ε); elsewhere point Gauss–Seidel is not a smoother and the
+  /// node joins a Jacobi line (docs/research/ehl-multigrid-rebuild.md, tenth session).
+  [[nodiscard]] bool poiseuille_dominates(const Level& l, const ReynoldsCoefficients& c, std::size_t i) const;
+
+  /// Runs of consecutive Jacobi nodes solved simultaneously: the band |k − j| ≤ line_band of
+  /// the Jacobian of the distributed change (−½, 1, −½), by sparse LU (Venner & Lubrecht's
+  /// line relaxation in one dimension, their init_line/solve_line). Point distributive Jacobi
+  /// leaves complex modes of |λ| ≈ 0.6 in the contact, the line removes them (eighth session).
+  /// Where a run's LU fails or its change is not finite, the point changes stay.
+  void solve_jacobi_lines(const Level& l, const ReynoldsCoefficients& c, const std::vector<char>& is_jacobi,
+                          const std::vector<double>& residual, std::vector<double>& change) const;
+
+  /// ∂L_i/∂P_i with the piezoviscous response of ε_i: ½(dε_i/dP)(P_{i−1} − 2P_i + P_{i+1})/h²
+  /// (faces by the mean of the nodes), where it keeps the derivative negative; at the
+  /// pressure spike of high L, ε falls by e^{ᾱΔP} and this term is what the frozen-ε
+  /// derivative misses.
+  [[nodiscard]] static double gauss_seidel_derivative(const ReynoldsCoefficients& c, std::size_t i);
+
+  /// The film of nodes i − 2 … i + 2 after a change δ of P_i: δH_k = −(D/π)K_|k−i|δ (the
+  /// nodes the next residuals read; the far film waits for the sweep's FFT).
+  void move_film_near(Level& l, std::size_t i, double delta) const;
+
+  /// A change of P_i limited to |Δ ln ε_i| = |d ln ε/dP|·|ΔP| ≤ change_limit: a linear model
+  /// of ε = ρ̄H³e^{−ᾱP} holds only for |ᾱΔP| of order 1, and larger changes (lines at tiny
+  /// ξ, Gauss–Seidel next to the spike, corrections from the spike's restricted residual)
+  /// are what ran away (docs/research/ehl-multigrid-rebuild.md, tenth session).
+  [[nodiscard]] double limit_change(const Level& l, std::size_t i, double change) const;
+
+  // --- local treatments (fas_local_treatments.cpp) ----------------------------
+  /// Local Newton solve of the pressure spike: the nodes within ±spike_window of it, with
+  /// every kernel coupling of the window and ε's film response, H0 fixed, two steps each
+  /// halved until the window's complementarity merit falls. The spike is a grid-scale
+  /// feature no coarse grid holds (Brandt's local relaxation of a singularity; eighth session:
+  /// the W-cycle's factor 0.25 → 0.12 with it).
+  void relax_spike(Level& l);
+
+  /// The outlet's free boundary, a grid-scale feature like the spike: free_boundary_sweeps
+  /// extra sweeps over the last free_boundary_window pressurised nodes and a few beyond
+  /// (eighth session: (20, 10) on 4097 nodes converges instead of a period-2 oscillation).
+  void relax_free_boundary(Level& l);
+
+  // --- coarsest grid (fas_coarsest.cpp) ---------------------------------------
+  /// Newton steps in (P, H0) on the coarsest grid (coarsest_solve.h) until the step no
+  /// longer moves H0 or P beyond rounding, at most `steps`.
+  void solve_coarsest(Level& l, int steps, double tolerance);
+
+  /// Σ of the squared complementarity residuals (r_i where P_i > 0, the negative part of r_i
+  /// where P_i = 0) and the squared force balance over h: the merit of the coarsest grid's
+  /// Newton steps. Leaves the film and coefficients of the current P.
+  [[nodiscard]] double coarsest_merit(Level& l);
+
+  /// The start on the coarsest grid: the Hertzian guess, then Newton in (P, H0) through a
+  /// homotopy in the piezoviscous exponent (η̄^s, s from 0 to 1 in steps that raise ln η̄ at
+  /// the Hertz pressure by at most 2), so that the first solve is isoviscous and each next
+  /// one starts close to its solution. It costs a few dense solves on the coarsest grid.
+  void start_on_coarsest();
+
+  /// Semi-ellipse carrying the load on |X| < 1, H0 from Moes' isoviscous asymptotes
+  /// (rigid and elastic) converted to these units.
+  void initial_guess(Level& l);
+
+  // --- cycles (fas_cycle.cpp) -------------------------------------------------
+  /// One V- or W-cycle from level k: pre-smoothing, the FAS coarse problem solved by γ
+  /// cycles of the next level (the coarsest directly), the correction, post-smoothing, then
+  /// the local treatments of the spike and the free boundary.
+  void cycle(std::size_t k);
+
+  /// Correction by linear interpolation, applied only inside the pressurised zone: not on
+  /// cavitated nodes nor next to them, and not on the last free_boundary_nodes pressurised
+  /// nodes, where the free boundary is the fine grid's to place (eighth session); each
+  /// change limited like a relaxation change.
+  void correct(const Level& coarse, const std::vector<double>& injected, Level& fine) const;
+
+  /// FAS coarse problem: injected pressure and film, the coarse grid's own (live)
+  /// coefficients, f_c = L_c(P̄) + R·r (full weighting; no residual where the fine pressure
+  /// is cavitated), g_c = ∫P̄ + (g − ∫P).
+  void restrict_problem(Level& fine, Level& coarse);
+
+  /// Full multigrid: each level's solution, interpolated, starts the next, which gets one
+  /// cycle. The change of H_c and H_min from one level to the next over 2^p − 1 estimates
+  /// the discretisation error; with levels chosen by target_error, levels are added until
+  /// the estimate is below it.
+  void full_multigrid(EhlResult& r);
+
+  /// FMG interpolation: cubic in the interior (4-point), linear next to the ends.
+  static void interpolate_solution(const Level& coarse, Level& fine);
+
+  /// A previous solution on the finest grid (the last time step) as the start.
+  void start_from(const WarmStart& warm);
+
+  // --- stop and figures (fas_stop.cpp) ----------------------------------------
+  void record_fmg_level(EhlResult& r, std::size_t k);
+
+  [[nodiscard]] Watched watched(Level& l);
+
+  /// Cycles until the per-cycle change of H_c, H_min and H0 and the force balance are below
+  /// error_fraction of the discretisation-error estimate. The Barus pressure spike is left
+  /// out: p_max does not converge with the grid (docs/ehl-model.md).
+  void iterate_to_error(EhlResult& r);
+
+  /// Cycles until the scaled residual and the force balance meet the tolerance.
+  void iterate_to_residual(EhlResult& r);
+
+  void record_residual(EhlResult& r, Level& fine);
+
+  /// The larger of the last two per-cycle factors of the scaled residual (the first cycle's
+  /// against the residual after full multigrid).
+  [[nodiscard]] static double residual_factor(const EhlResult& r, double after_fmg);
+
+  /// A residual or force balance that is not finite, or above 10 (scaled: a first cycle
+  /// starts near 1e-2), does not come back.
+  [[nodiscard]] static bool diverged(const EhlResult& r);
+
+  void accept(EhlResult& r, std::string message);
+
+  static void reject(EhlResult& r, std::string message);
+
+  /// h_min and p_max of a full-multigrid level; the previous level's become the coarse ones.
+  void remember_level_figures(const Level& l);
+
+  void fill_figures(const Level& l, EhlResult& r) const;
+
+  // --- helpers ---------------------------------------------------------------------------
+  [[nodiscard]] double force_balance(const Level& l) const { return std::abs(integral(l) - l.g) / state_.load; }
+
+  [[nodiscard]] static double last(const std::vector<double>& v) { return v.empty() ? 0.0 : v.back(); }
+
+  [[nodiscard]] double work_units() const { return node_sweeps_ / static_cast<double>(levels_.back()->n); }
+  /// The last pressurised node (the outlet's free boundary); 0 if none.
+  [[nodiscard]] static std::size_t last_pressurised(const std::vector<double>& P);
+  /// The pressure spike: the last local maximum of P before the outlet's cavitation.
+  [[nodiscard]] static std::size_t spike_index(const std::vector<double>& P);
+  /// Relative change |a − b|/|b|, 0 for b = 0 = a.
+  [[nodiscard]] static double relative(double a, double b);
+
+  LineContactProblem problem_;
+  EhlOptions o_;
+  ContactState state_;
+  double x_in_ = 0.0, x_out_ = 0.0;
+  std::size_t coarsest_ = 0;  ///< nodes of the coarsest grid
+  std::vector<std::unique_ptr<Level>> levels_;
+  double H0_ = 0.0;
+  double viscosity_exponent_ = 1.0;  ///< s of the start's homotopy η̄^s (1 after the start)
+  double node_sweeps_ = 0.0;         ///< work: Σ nodes of every sweep, dense steps by their flops
+  double coarse_h_min_ = 0.0, coarse_p_max_ = 0.0, level_h_min_ = 0.0, level_p_max_ = 0.0;
+  bool has_level_ = false;   ///< a full-multigrid level was recorded
+  bool has_coarse_ = false;  ///< a solution on the next-coarser grid was recorded (full multigrid)
+};
+
+}  // namespace gearbench::ehl

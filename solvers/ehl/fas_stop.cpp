@@ -1,0 +1,180 @@
+// When a solve stops and what it reports: the discretisation-error estimate of full multigrid,
+// the stop at a fraction of it or at a residual tolerance, and the result's figures.
+#include "fas_multigrid_impl.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace gearbench::ehl {
+
+void FasMultigrid::Impl::record_fmg_level(EhlResult& r, std::size_t k) {
+  Level& l = *levels_[k];
+  const Watched w = watched(l);
+  r.fmg_nodes.push_back(static_cast<double>(l.n));
+  r.fmg_H_c.push_back(w.H_c);
+  r.fmg_H_min.push_back(w.H_min);
+  remember_level_figures(l);
+  const std::size_t n = r.fmg_H_c.size();
+  if (n < 2) return;
+  const double scale = std::pow(2.0, order) - 1.0;
+  r.error_estimate = std::max(relative(r.fmg_H_c[n - 1], r.fmg_H_c[n - 2]),
+                              relative(r.fmg_H_min[n - 1], r.fmg_H_min[n - 2])) / scale;
+  if (!(w.H_min > 0.0)) r.error_estimate = std::numeric_limits<double>::infinity();
+}
+
+FasMultigrid::Impl::Watched FasMultigrid::Impl::watched(Level& l) {
+  update_film(l);
+  Watched w;
+  w.H_c = film_at_centre(l);
+  w.H_min = *std::min_element(l.H.begin(), l.H.end());
+  w.H0 = H0_;
+  return w;
+}
+
+void FasMultigrid::Impl::iterate_to_error(EhlResult& r) {
+  Level& fine = *levels_.back();
+  const double bound = o_.error_fraction * r.error_estimate;
+  r.stop_rule = fmt::format("per-cycle change of H_c, H_min, H0 and the force balance below {:g} × the "
+                            "discretisation-error estimate {:.2g} (= {:.2g})",
+                            o_.error_fraction, r.error_estimate, bound);
+  Watched before = watched(fine);
+  const double previous_residual = scaled_residual(fine);  // after full multigrid
+  for (int c = 0; c < o_.max_cycles; ++c) {
+    cycle(levels_.size() - 1);
+    ++r.cycles;
+    record_residual(r, fine);
+    if (diverged(r)) break;
+    const Watched now = watched(fine);
+    const double change = std::max({relative(now.H_c, before.H_c), relative(now.H_min, before.H_min),
+                                    std::abs(now.H0 - before.H0) / std::max(std::abs(now.H_c), 1e-300)});
+    before = now;
+    // The algebraic error left after a cycle that changed the figures by δ, at a
+    // per-cycle factor ρ, is δ·ρ/(1 − ρ); ρ is the larger of the residual's last two
+    // factors, so that a stalled iteration (ρ → 1: a fixed point that is not the discrete
+    // solution) is never accepted however small its change.
+    const double rho = residual_factor(r, previous_residual);
+    const double left = rho < 1.0 ? change * rho / (1.0 - rho) : std::numeric_limits<double>::infinity();
+    if (left <= bound && r.force_history.back() <= bound) {
+      accept(r, fmt::format("converged: the algebraic error left, {:.2g} (per-cycle change {:.2g} at factor {:.2f}), "
+                            "is below {:g} of the discretisation-error estimate {:.2g} after {} cycles",
+                            left, change, rho, o_.error_fraction, r.error_estimate, r.cycles));
+      return;
+    }
+  }
+  reject(r, fmt::format("EHL multigrid did not reach {:g} of its discretisation-error estimate {:.2g} in {} "
+                        "cycles (last residual {:.3e}, force balance {:.3e})",
+                        o_.error_fraction, r.error_estimate, r.cycles, last(r.residual_history),
+                        last(r.force_history)));
+}
+
+void FasMultigrid::Impl::iterate_to_residual(EhlResult& r) {
+  Level& fine = *levels_.back();
+  r.stop_rule = fmt::format("scaled residual and force balance below {:.1e}", o_.tolerance);
+  for (int c = 0; c < o_.max_cycles; ++c) {
+    cycle(levels_.size() - 1);
+    ++r.cycles;
+    record_residual(r, fine);
+    if (diverged(r)) break;
+    if (r.residual_history.back() <= o_.tolerance && r.force_history.back() <= o_.tolerance) {
+      accept(r, fmt::format("converged: scaled residual {:.2e} and force balance {:.2e} below {:.1e} after {} "
+                            "cycles", r.residual_history.back(), r.force_history.back(), o_.tolerance, r.cycles));
+      return;
+    }
+  }
+  reject(r, fmt::format("EHL multigrid did not converge in {} cycles (residual {:.3e}, force balance {:.3e}, "
+                        "tolerance {:.1e})", r.cycles, last(r.residual_history), last(r.force_history),
+                        o_.tolerance));
+}
+
+void FasMultigrid::Impl::record_residual(EhlResult& r, Level& fine) {
+  r.residual_history.push_back(scaled_residual(fine));
+  r.force_history.push_back(force_balance(fine));
+  const std::size_t n = r.residual_history.size();
+  if (n >= 2 && r.residual_history.front() > 0.0)
+    r.convergence_factor = std::pow(r.residual_history.back() / r.residual_history.front(), 1.0 / double(n - 1));
+}
+
+double FasMultigrid::Impl::residual_factor(const EhlResult& r, double after_fmg) {
+  const auto& h = r.residual_history;
+  const std::size_t n = h.size();
+  const double newest = h[n - 1] / (n >= 2 ? h[n - 2] : after_fmg);
+  if (n < 2) return newest;
+  return std::max(newest, h[n - 2] / (n >= 3 ? h[n - 3] : after_fmg));
+}
+
+bool FasMultigrid::Impl::diverged(const EhlResult& r) {
+  const double residual = r.residual_history.back(), force = r.force_history.back();
+  return !(std::isfinite(residual) && std::isfinite(force) && residual <= 10.0 && force <= 10.0);
+}
+
+void FasMultigrid::Impl::accept(EhlResult& r, std::string message) {
+  r.converged = true;
+  r.message = std::move(message);
+  r.work_units_at_error = work_units();
+}
+
+void FasMultigrid::Impl::reject(EhlResult& r, std::string message) {
+  r.converged = false;
+  r.message = std::move(message);
+}
+
+void FasMultigrid::Impl::remember_level_figures(const Level& l) {
+  if (has_level_) {
+    coarse_h_min_ = level_h_min_;
+    coarse_p_max_ = level_p_max_;
+    has_coarse_ = true;
+  }
+  EhlResult figures;
+  fill_figures(l, figures);
+  level_h_min_ = figures.h_min;
+  level_p_max_ = figures.p_max;
+  has_level_ = true;
+}
+
+void FasMultigrid::Impl::fill_figures(const Level& l, EhlResult& r) const {
+  const double hs = problem_.film_scale();
+  const double ls = problem_.length_scale();
+  const double ps = problem_.pressure_scale();
+  r.X = l.X;
+  r.P = l.P;
+  r.H = l.H;
+  r.H0 = H0_;
+  const auto imin = static_cast<std::size_t>(std::min_element(l.H.begin(), l.H.end()) - l.H.begin());
+  r.h_min = l.H[imin] * hs;
+  r.x_h_min = l.X[imin] * ls;
+  r.p_max = *std::max_element(l.P.begin(), l.P.end()) * ps;
+  r.h_central = film_at_centre(l) * hs;
+  // First zero of dP/dX from the inlet (the first pressure maximum).
+  r.h_dpdx0 = r.h_central;
+  for (std::size_t i = 1; i + 1 < l.n; ++i)
+    if (l.P[i] > 0.0 && l.P[i] >= l.P[i - 1] && l.P[i] > l.P[i + 1]) {
+      r.h_dpdx0 = l.H[i] * hs;
+      break;
+    }
+  // Newtonian traction: τ = η(u2 − u1)/h − (h/2)dp/dx on surface 1, integrated where the
+  // film is pressurised (the cavitated film carries no full-film shear).
+  const auto& d = problem_.data();
+  double force = 0.0;
+  for (std::size_t i = 1; i + 1 < l.n; ++i) {
+    if (l.P[i] <= 0.0 || l.H[i] <= 0.0) continue;
+    const double h = l.H[i] * hs;
+    const double dpdx = (l.P[i + 1] - l.P[i - 1]) / (2.0 * l.h) * ps / ls;
+    const double eta = d.viscosity * problem_.viscosity(l.P[i]);
+    force += (eta * (d.u2 - d.u1) / h - 0.5 * h * dpdx) * l.h * ls;
+  }
+  r.friction_force = force;
+  r.friction_coefficient = force / d.load_per_length;
+  if (has_coarse_) {
+    r.coarse_h_min = coarse_h_min_;
+    r.coarse_p_max = coarse_p_max_;
+    // A coarse film at or below zero (heavy loads on coarse grids) gives a change above 1.
+    if (r.h_min > 0.0 && r.p_max > 0.0) {
+      r.h_min_change = std::abs(r.h_min - coarse_h_min_) / r.h_min;
+      r.p_max_change = std::abs(r.p_max - coarse_p_max_) / r.p_max;
+    }
+  }
+}
+
+}  // namespace gearbench::ehl
