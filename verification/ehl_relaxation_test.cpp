@@ -1,6 +1,7 @@
 // Unit tests of the EHL multigrid's pieces: the second-order wedge stencil, the Jacobian it
 // implies, the grid options (nodes, levels, the sized coarsest grid), and a warm start from a
-// converged solution that must stay put.
+// converged solution that must stay put; a coarsest grid without a Newton step ends the solve
+// with a status.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -106,6 +107,22 @@ TEST(FasMultigrid, WarmStartFromTheSolutionStays) {
   EXPECT_LE(again.cycles, 2);
   const double h_min = *std::min_element(s.H.begin(), s.H.end());
   for (std::size_t i = 0; i < s.H.size(); ++i) EXPECT_NEAR(again.H[i], s.H[i], 1e-6 * h_min) << i;
+}
+
+// A contact whose dimensionless scales a double does not hold (a load of 1e-300 N/m: the
+// pressure scale underflows, the load F overflows) gives the coarsest grid no Newton step:
+// the solve returns unconverged, naming the cause, and does not throw.
+TEST(FasMultigrid, CoarsestGridWithoutAStepIsAStatusNotAnException) {
+  LineContactData d = LineContactData::from_moes(10.0, 5.0);
+  d.load_per_length = 1e-300;
+  EhlOptions o;
+  o.nodes = 161;
+  EhlResult r;
+  ASSERT_NO_THROW(r = LineContactSolver(LineContactProblem(d), o).try_solve());
+  EXPECT_FALSE(r.converged);
+  EXPECT_NE(r.message.find("the (P, H0) Newton system has non-finite coefficients"), std::string::npos)
+      << r.message;
+  EXPECT_THROW((void)LineContactSolver(LineContactProblem(d), o).solve(), ConvergenceError);
 }
 
 }  // namespace

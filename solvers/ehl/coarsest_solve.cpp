@@ -1,7 +1,6 @@
 #include "coarsest_solve.h"
 
 #include <Eigen/Dense>
-#include <stdexcept>
 
 namespace gearbench::ehl {
 
@@ -37,9 +36,16 @@ CoarsestStep coarsest_newton_step(const ReynoldsCoefficients& c, const std::vect
   // Force balance: h·Σ δP_j = g − h·Σ P_j.
   for (std::size_t j = 1; j + 1 < n; ++j) A(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(j - 1)) = c.h;
   b(static_cast<Eigen::Index>(m)) = force_gap;
-  const Eigen::VectorXd x = A.partialPivLu().solve(b);
-  if (!x.allFinite()) throw std::runtime_error("EHL coarsest grid: the (P, H0) system is singular");
   CoarsestStep step;
+  if (!A.allFinite() || !b.allFinite()) {
+    step.info = StepInfo::non_finite_system;
+    return step;
+  }
+  const Eigen::VectorXd x = A.partialPivLu().solve(b);
+  if (!x.allFinite()) {
+    step.info = StepInfo::singular;
+    return step;
+  }
   step.dP.assign(n, 0.0);
   for (std::size_t j = 1; j + 1 < n; ++j) step.dP[j] = x(static_cast<Eigen::Index>(j - 1));
   step.dH0 = x(static_cast<Eigen::Index>(m));

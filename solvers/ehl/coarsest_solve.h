@@ -19,12 +19,19 @@ struct FilmSensitivity {
   std::vector<double> left, right;
 };
 
+/// Whether a step was found (as Eigen's ComputationInfo): the system's coefficients may be
+/// non-finite (a contact whose dimensionless scales a double does not hold: λ, F or p_r of
+/// inputs like a load of 1e-300 N/m) or the system singular; then there is no step.
+enum class StepInfo { success, non_finite_system, singular };
+
 struct CoarsestStep {
-  std::vector<double> dP;  ///< pressure change (zero at the ends and at held nodes)
+  StepInfo info = StepInfo::success;
+  std::vector<double> dP;  ///< pressure change (zero at the ends and at held nodes); empty without a step
   double dH0 = 0.0;        ///< change of the film constant
 };
 
 /// One Newton step: `residual` is f − L(P) at the interior nodes, `force_gap` g − h·Σ P.
+/// Never throws on the system: a failed step comes back with its info.
 [[nodiscard]] CoarsestStep coarsest_newton_step(const ReynoldsCoefficients& c, const std::vector<double>& P,
                                                 const std::vector<double>& residual,
                                                 const FilmSensitivity& film,

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <fmt/format.h>
 
 namespace gearbench::ehl {
 
@@ -15,6 +16,15 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance) {
     const CoarsestStep step =
         coarsest_newton_step(coefficients(l), l.P, residuals(l), film_sensitivity(l), l.g - integral(l));
     node_sweeps_ += dense_step_cost * std::pow(static_cast<double>(l.n), 3);
+    if (step.info != StepInfo::success) {
+      const auto& d = problem_.data();
+      failure_ = fmt::format(
+          "EHL coarsest grid ({} nodes): the (P, H0) Newton system {}; the contact in the solver's scaling: "
+          "M {:.3g}, L {:.3g}, λ {:.3g}, load F {:.3g}, pressure scale {:.3g} Pa",
+          l.n, step.info == StepInfo::singular ? "is singular" : "has non-finite coefficients", d.moes_M(),
+          d.moes_L(), problem_.lambda(), problem_.load(), problem_.pressure_scale());
+      break;
+    }
     // Backtracking: the largest of 1, ½, ¼, … that lowers the merit; none does: the solve
     // keeps its last iterate (strict descent: a Newton step on a live coarse grid can
     // otherwise leave the region where its problem is meaningful, eighth session).
@@ -64,7 +74,7 @@ void FasMultigrid::Impl::start_on_coarsest() {
   initial_guess(l);
   const double exponent_at_hertz = problem_.log_viscosity(problem_.hertz_pressure() / problem_.pressure_scale());
   const int stages = std::max(1, static_cast<int>(std::ceil(exponent_at_hertz / homotopy_step)));
-  for (int s = 0; s <= stages; ++s) {
+  for (int s = 0; s <= stages && failure_.empty(); ++s) {
     viscosity_exponent_ = static_cast<double>(s) / stages;
     solve_coarsest(l, coarsest_steps_per_stage, s == stages ? coarsest_tolerance : homotopy_tolerance);
   }

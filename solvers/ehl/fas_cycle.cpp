@@ -68,7 +68,7 @@ void FasMultigrid::Impl::restrict_problem(Level& fine, Level& coarse) {
 void FasMultigrid::Impl::full_multigrid(EhlResult& r) {
   start_on_coarsest();
   record_fmg_level(r, 0);
-  for (std::size_t k = 1;; ++k) {
+  for (std::size_t k = 1; failure_.empty(); ++k) {
     if (k == levels_.size()) {
       if (!o_.adaptive() || (k >= 3 && r.error_estimate <= o_.target_error) ||
           static_cast<int>(k) >= o_.max_levels)

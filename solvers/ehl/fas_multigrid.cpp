@@ -36,11 +36,14 @@ EhlResult FasMultigrid::Impl::solve(const std::optional<WarmStart>& warm) {
     iterate_to_residual(r);
   } else {
     full_multigrid(r);
-    if (o_.stop == StopRule::discretisation_error && std::isfinite(r.error_estimate))
-      iterate_to_error(r);
-    else
-      iterate_to_residual(r);
+    if (failure_.empty()) {  // no iteration from a start that failed
+      if (o_.stop == StopRule::discretisation_error && std::isfinite(r.error_estimate))
+        iterate_to_error(r);
+      else
+        iterate_to_residual(r);
+    }
   }
+  if (!failure_.empty()) reject(r, failure_);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const auto& l : levels_) r.seconds_per_level.push_back(l->seconds);
   r.levels = static_cast<int>(levels_.size());

@@ -273,8 +273,8 @@ class FasMultigrid::Impl {
   [[nodiscard]] static double residual_factor(const EhlResult& r, double after_fmg);
 
   /// A residual or force balance that is not finite, or above 10 (scaled: a first cycle
-  /// starts near 1e-2), does not come back.
-  [[nodiscard]] static bool diverged(const EhlResult& r);
+  /// starts near 1e-2), does not come back; nor does an iteration with a failure_.
+  [[nodiscard]] bool diverged(const EhlResult& r) const;
 
   void accept(EhlResult& r, std::string message);
 
@@ -310,6 +310,9 @@ class FasMultigrid::Impl {
   double coarse_h_min_ = 0.0, coarse_p_max_ = 0.0, level_h_min_ = 0.0, level_p_max_ = 0.0;
   bool has_level_ = false;   ///< a full-multigrid level was recorded
   bool has_coarse_ = false;  ///< a solution on the next-coarser grid was recorded (full multigrid)
+  /// Why the iteration cannot go on (a coarsest grid without a Newton step); empty while it can.
+  /// The solve then ends unconverged with this message: a status, not an exception.
+  std::string failure_;
 };
 
 }  // namespace gearbench::ehl

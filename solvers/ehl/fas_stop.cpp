@@ -104,9 +104,9 @@ double FasMultigrid::Impl::residual_factor(const EhlResult& r, double after_fmg)
   return std::max(newest, h[n - 2] / (n >= 3 ? h[n - 3] : after_fmg));
 }
 
-bool FasMultigrid::Impl::diverged(const EhlResult& r) {
+bool FasMultigrid::Impl::diverged(const EhlResult& r) const {
   const double residual = r.residual_history.back(), force = r.force_history.back();
-  return !(std::isfinite(residual) && std::isfinite(force) && residual <= 10.0 && force <= 10.0);
+  return !failure_.empty() || !(std::isfinite(residual) && std::isfinite(force) && residual <= 10.0 && force <= 10.0);
 }
 
 void FasMultigrid::Impl::accept(EhlResult& r, std::string message) {
