@@ -37,6 +37,9 @@ class FasMultigrid::Impl {
   /// Order of the discretisation (second-order wedge, central Poiseuille): the error estimate
   /// from two grids is their difference over 2^p − 1.
   static constexpr double order = 2.0;
+  /// The ratio of successive full-multigrid changes from which the grids count as asymptotic
+  /// (2^p = 4 in the limit; 2.5 leaves room for a noisy H_min, fas_stop.cpp).
+  static constexpr double asymptotic_ratio = 2.5;
   /// Newton steps of the coarsest grid per visit within a cycle (each visit starts from the
   /// last one's solution: two steps meet it to rounding where it is smooth).
   static constexpr int coarsest_steps_per_visit = 3;
@@ -254,6 +257,7 @@ class FasMultigrid::Impl {
   void start_from(const WarmStart& warm);
 
   // --- stop and figures (fas_stop.cpp) ----------------------------------------
+  [[nodiscard]] static double level_error_estimate(const std::vector<double>& figures);
   void record_fmg_level(EhlResult& r, std::size_t k);
 
   [[nodiscard]] Watched watched(Level& l);
