@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <map>
+#include <optional>
 
 #include "check_registry.h"
 #include "ehl/transient_mesh_ehl.h"
@@ -30,13 +31,19 @@ Seed004 seed004(const CheckContext& ctx) {
   return {std::move(c), fluid};
 }
 
-TransientMeshResult run_seed004(const CheckContext& ctx, int steps, int levels, double tolerance = 1e-6) {
+/// Seed 004's march; each step stops at its discretisation error, or at a residual tolerance
+/// when one is given.
+TransientMeshResult run_seed004(const CheckContext& ctx, int steps, int levels,
+                                std::optional<double> residual_tolerance = std::nullopt) {
   const auto s = seed004(ctx);
   const geometry::GearPairGeometry g(s.gear_case.gear_pair);
   TransientMeshOptions o;
   o.steps = steps;
   o.grid.nodes = 40 * (1 << (levels - 1)) + 1;  // levels above a 41-node coarsest grid
-  o.grid.tolerance = tolerance;
+  if (residual_tolerance) {
+    o.grid.stop = StopRule::residual;
+    o.grid.tolerance = *residual_tolerance;
+  }
   auto r = TransientMeshEhl(g, *s.gear_case.operating, s.fluid, o).run();
   if (!r.converged) throw std::runtime_error("seed 004 transient EHL: " + r.summary());
   return r;
@@ -82,7 +89,9 @@ const RegisterCheck p_max_check(CheckSpec{
                         {{"position_m", r.p_max_position}, {"B_m", g.path().B},
                          {"hertz_pressure_at_B_GPa", step_nearest(r, g.path().B).hertz_pressure * 1e-9}}};
     },
-    .recorded = 1.3928, .recorded_tolerance = 0.005});
+    // Second-order multigrid, 641 nodes (eleventh session): 1.399, 1.408, 1.563 GPa on 321, 641,
+    // 1281 nodes: the Barus spike at B sharpens with the grid and does not converge (docs/ehl-model.md).
+    .recorded = 1.4080, .recorded_tolerance = 0.005});
 
 const RegisterCheck p_max_place(CheckSpec{
     .id = "seed004.transient.p_max_position", .section = section, .solver = solver,
@@ -108,7 +117,9 @@ const RegisterCheck h_min_check(CheckSpec{
       const auto& r = seed_run(ctx);
       return CheckValue{r.h_min * 1e6, 0.34, {{"position_m", r.h_min_position}}};
     },
-    .recorded = 0.3174, .recorded_tolerance = 0.005});
+    // 0.3076, 0.3113, 0.3129 µm on 321, 641, 1281 nodes: 641 nodes within ~1 % of the grid limit
+    // (the first-order solver's 0.3174 sat above it).
+    .recorded = 0.3113, .recorded_tolerance = 0.005});
 
 const RegisterCheck h_c_check(CheckSpec{
     .id = "seed004.transient.h_central_pitch", .section = section, .solver = solver,
@@ -121,7 +132,9 @@ const RegisterCheck h_c_check(CheckSpec{
       return CheckValue{step_nearest(r, pitch_point(ctx)).h_central * 1e6, 0.40,
                         {{"h_central_range_um", {r.h_central_min * 1e6, r.h_central_max * 1e6}}}};
     },
-    .recorded = 0.3994, .recorded_tolerance = 0.005});
+    // 0.3890, 0.3913, 0.3919 µm on 321, 641, 1281 nodes (order ~1.9): 641 nodes within 0.2 % of
+    // the grid limit (the first-order solver's 0.3994 sat 2 % above it).
+    .recorded = 0.3913, .recorded_tolerance = 0.005});
 
 const RegisterCheck second_peak(CheckSpec{
     .id = "seed004.transient.second_peak", .section = section, .solver = solver,
