@@ -83,7 +83,19 @@ void FasMultigrid::Impl::full_multigrid(EhlResult& r) {
     // With the grid chosen by the error target, a level whose film is still negative (heavy
     // loads on coarse grids: no estimate) is not the end: finer levels may resolve it
     // (tenth session, (1000, 0) positive from 2049 nodes). A fixed grid stops there.
-    if (!std::isfinite(r.error_estimate) && !o_.adaptive()) break;
+    if (!std::isfinite(r.error_estimate)) {
+      if (!o_.adaptive()) break;
+      continue;
+    }
+    // Under the error rule every level is converged before the next: the estimate is then a
+    // difference of discrete solutions. One cycle per level leaves algebraic errors larger than
+    // the discretisation error in places (Martin's limit: H_min 0.504 after one cycle on 129
+    // nodes against 0.458 converged; the estimate on 513 nodes read 0.14 % for a 0.43 % error,
+    // eleventh session). The coarser levels add at most about the finest level's own cost.
+    if (o_.stop == StopRule::discretisation_error) {
+      iterate_to_error(r, k);
+      if (!r.converged) break;
+    }
   }
 }
 

@@ -35,13 +35,9 @@ EhlResult FasMultigrid::Impl::solve(const std::optional<WarmStart>& warm) {
     start_from(*warm);
     iterate_to_residual(r);
   } else {
-    full_multigrid(r);
-    if (failure_.empty()) {  // no iteration from a start that failed
-      if (o_.stop == StopRule::discretisation_error && std::isfinite(r.error_estimate))
-        iterate_to_error(r);
-      else
-        iterate_to_residual(r);
-    }
+    full_multigrid(r);  // under the error rule, converges every level to it
+    if (failure_.empty() && !(o_.stop == StopRule::discretisation_error && std::isfinite(r.error_estimate)))
+      iterate_to_residual(r);
   }
   if (!failure_.empty()) reject(r, failure_);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

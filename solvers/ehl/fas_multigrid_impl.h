@@ -262,10 +262,15 @@ class FasMultigrid::Impl {
 
   [[nodiscard]] Watched watched(Level& l);
 
-  /// Cycles until the per-cycle change of H_c, H_min and H0 and the force balance are below
-  /// error_fraction of the discretisation-error estimate. The Barus pressure spike is left
-  /// out: p_max does not converge with the grid (docs/ehl-model.md).
-  void iterate_to_error(EhlResult& r);
+  /// The level's figures after a cycle replace its full-multigrid ones, and the error
+  /// estimate is recomputed from them.
+  void update_fmg_level(EhlResult& r, std::size_t k);
+
+  /// Cycles on level k until the per-cycle change of H_c, H_min and H0 and the force balance
+  /// are below error_fraction of the discretisation-error estimate, which is recomputed each
+  /// cycle from the level's figures and the converged coarser levels'. The Barus pressure spike
+  /// is left out: p_max does not converge with the grid (docs/ehl-model.md).
+  void iterate_to_error(EhlResult& r, std::size_t k);
 
   /// Cycles until the scaled residual and the force balance meet the tolerance.
   void iterate_to_residual(EhlResult& r);

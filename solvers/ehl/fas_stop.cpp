@@ -71,16 +71,28 @@ FasMultigrid::Impl::Watched FasMultigrid::Impl::watched(Level& l) {
   return w;
 }
 
-void FasMultigrid::Impl::iterate_to_error(EhlResult& r) {
-  Level& fine = *levels_.back();
-  const double bound = o_.error_fraction * r.error_estimate;
-  r.stop_rule = fmt::format("per-cycle change of H_c, H_min, H0 and the force balance below {:g} × the "
-                            "discretisation-error estimate {:.2g} (= {:.2g})",
-                            o_.error_fraction, r.error_estimate, bound);
+void FasMultigrid::Impl::update_fmg_level(EhlResult& r, std::size_t k) {
+  Level& l = *levels_[k];
+  const Watched w = watched(l);
+  r.fmg_H_c.back() = w.H_c;
+  r.fmg_H_min.back() = w.H_min;
+  EhlResult figures;
+  fill_figures(l, figures);
+  level_h_min_ = figures.h_min;
+  level_p_max_ = figures.p_max;
+  r.error_estimate = std::max(level_error_estimate(r.fmg_H_c), level_error_estimate(r.fmg_H_min));
+  if (!(w.H_min > 0.0)) r.error_estimate = std::numeric_limits<double>::infinity();
+}
+
+void FasMultigrid::Impl::iterate_to_error(EhlResult& r, std::size_t k) {
+  Level& fine = *levels_[k];
+  r.cycles = 0;
+  r.residual_history.clear();
+  r.force_history.clear();
   Watched before = watched(fine);
-  const double previous_residual = scaled_residual(fine);  // after full multigrid
+  const double previous_residual = scaled_residual(fine);  // after the level's full-multigrid cycle
   for (int c = 0; c < o_.max_cycles; ++c) {
-    cycle(levels_.size() - 1);
+    cycle(k);
     ++r.cycles;
     record_residual(r, fine);
     if (diverged(r)) break;
@@ -88,6 +100,9 @@ void FasMultigrid::Impl::iterate_to_error(EhlResult& r) {
     const double change = std::max({relative(now.H_c, before.H_c), relative(now.H_min, before.H_min),
                                     std::abs(now.H0 - before.H0) / std::max(std::abs(now.H_c), 1e-300)});
     before = now;
+    // The estimate is the level's against the converged coarser levels, with this cycle's figures.
+    update_fmg_level(r, k);
+    const double bound = o_.error_fraction * r.error_estimate;
     // The algebraic error left after a cycle that changed the figures by δ, at a
     // per-cycle factor ρ, is δ·ρ/(1 − ρ); ρ is the larger of the residual's last two
     // factors, so that a stalled iteration (ρ → 1: a fixed point that is not the discrete
@@ -95,15 +110,18 @@ void FasMultigrid::Impl::iterate_to_error(EhlResult& r) {
     const double rho = residual_factor(r, previous_residual);
     const double left = rho < 1.0 ? change * rho / (1.0 - rho) : std::numeric_limits<double>::infinity();
     if (left <= bound && r.force_history.back() <= bound) {
+      r.stop_rule = fmt::format("on every level, per-cycle change of H_c, H_min, H0 and the force balance below "
+                                "{:g} × the discretisation-error estimate ({:.2g} × {:.2g} = {:.2g} on the last)",
+                                o_.error_fraction, o_.error_fraction, r.error_estimate, bound);
       accept(r, fmt::format("converged: the algebraic error left, {:.2g} (per-cycle change {:.2g} at factor {:.2f}), "
                             "is below {:g} of the discretisation-error estimate {:.2g} after {} cycles",
                             left, change, rho, o_.error_fraction, r.error_estimate, r.cycles));
       return;
     }
   }
-  reject(r, fmt::format("EHL multigrid did not reach {:g} of its discretisation-error estimate {:.2g} in {} "
-                        "cycles (last residual {:.3e}, force balance {:.3e})",
-                        o_.error_fraction, r.error_estimate, r.cycles, last(r.residual_history),
+  reject(r, fmt::format("EHL multigrid did not reach {:g} of its discretisation-error estimate {:.2g} on {} nodes "
+                        "in {} cycles (last residual {:.3e}, force balance {:.3e})",
+                        o_.error_fraction, r.error_estimate, fine.n, r.cycles, last(r.residual_history),
                         last(r.force_history)));
 }
 

@@ -40,7 +40,7 @@ struct EhlOptions {
                                   ///< neither nodes nor levels: chosen by target_error
   int coarsest_nodes = 0;         ///< nodes on the coarsest grid; 0: sized by the film   0 or [9, 1025]
   int max_levels = 10;            ///< cap on the levels target_error adds (16385 nodes) [2, 14]
-  double target_error = 0.01;     ///< estimated relative error of H_c and H_min to reach (0, 0.5]
+  double target_error = 0.005;    ///< estimated relative error of H_c and H_min to reach (0, 0.5]
   /// W: V-cycles degrade with depth on live coarse grids (0.54 → 0.79 from 2 to 7 levels),
   /// W-cycles do not (0.42) (docs/research/ehl-multigrid-rebuild.md, eighth session).
   CycleType cycle = CycleType::W;

@@ -1,6 +1,6 @@
 // The EHL multigrid itself (issue 19): one scheme over the (M, L) map at the default
-// settings, the default answer within its 1 % target of the grid-converged film, second order
-// on three Moes points, and a per-cycle convergence factor of a real smoother.
+// settings, the default answer within 1 % of the grid-converged film, second order on three
+// Moes points, and the per-cycle convergence factor against Venner & Lubrecht's.
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -20,27 +20,18 @@ using namespace gearbench::ehl;
 const char* section = "Multigrid line-contact EHL (steady, isothermal)";
 const char* solver = "ehl";
 
-/// M up to which the map must converge today; M = 500 and 1000 need a coarsest grid of
-/// 513–1025 nodes (the film against the mesh) whose dense solve is too costly, and fail.
-constexpr double map_M_limit = 200.0;
-
 const RegisterCheck map_default(CheckSpec{
     .id = "ehl.multigrid.map_default", .section = section, .solver = solver,
     .reference = "issue 19: every in-range (M, L) converges from scratch with one scheme",
-    .quantity = "points of M 1–200 × L 0–25 (step 2.5), default settings, that do not converge",
+    .quantity = "points of M 1–1000 × L 0–25 (step 2.5, ᾱ ≤ 40), default settings, that do not converge",
     .unit = "points", .tolerance = {0, 0},
-    .justification = "the default solver has no fallback: a point that does not converge is a failure. "
-                     "M = 500 and 1000 are outside this check (they fail today; the report's map shows them)",
+    .justification = "the default solver has no fallback: a point that does not converge is a failure",
     .tier = Tier::fast, .run = [](const CheckContext&) {
       int failures = 0, points = 0;
       double worst_work = 0.0;
-      nlohmann::json failed = nlohmann::json::array(), heavy = nlohmann::json::array();
+      nlohmann::json failed = nlohmann::json::array();
       for (const auto& pt : moes_map()) {
         if (!pt.in_range) continue;
-        if (pt.M > map_M_limit) {
-          heavy.push_back({{"M", pt.M}, {"L", pt.L}, {"converged", pt.converged}});
-          continue;
-        }
         ++points;
         worst_work = std::max(worst_work, pt.work_units);
         if (!pt.converged) {
@@ -49,16 +40,20 @@ const RegisterCheck map_default(CheckSpec{
         }
       }
       return CheckValue{static_cast<double>(failures), 0.0,
-                        {{"points", points}, {"failed_M_L", failed}, {"largest_work_units", worst_work},
-                         {"M_500_1000", heavy}}};
+                        {{"points", points}, {"failed_M_L", failed}, {"largest_work_units", worst_work}}};
     }});
 
-/// The default solve of (M, L) against the grid-converged film of a 257/513/1025 series.
+/// The grids on which the observed order is asymptotic at the order points (eleventh session):
+/// 257/513/1025 is not at (2, 10), where H_c's order reads 2.46, 2.29, 1.83, 1.89 on the
+/// successive windows 257 … 8193.
+const std::vector<int> asymptotic_series{1025, 2049, 4097};
+
+/// The default solve of (M, L) against the grid-converged film of the 1025/2049/4097 series.
 CheckValue default_accuracy(double M, double L) {
   const auto d = LineContactData::from_moes(M, L);
   const LineContactProblem p(d);
   const auto r = LineContactSolver(p, EhlOptions{}).solve();
-  const auto s = grid_series(M, L, {257, 513, 1025});
+  const auto s = grid_series(M, L, asymptotic_series);
   const double order_c = observed_order(s.H_c), order_min = observed_order(s.H_min);
   const double H_c = richardson(s.H_c, order_c), H_min = richardson(s.H_min, order_min);
   const double error = std::max(std::abs(r.h_central * moes_units(d) / H_c - 1.0),
@@ -80,12 +75,13 @@ const bool accuracy_checks = [] {
   for (const auto& pt : accuracy_points)
     Registry::instance().add(CheckSpec{
         .id = fmt::format("ehl.multigrid.default_accuracy_M{:g}_L{:g}", pt.M, pt.L), .section = section,
-        .solver = solver, .reference = "the grid-converged film (Richardson, observed order, 257/513/1025 nodes)",
+        .solver = solver, .reference = "the grid-converged film (Richardson, observed order, 1025/2049/4097 nodes)",
         .quantity = fmt::format("max relative error of H_c and H_min at the default settings, M = {:g}, L = {:g}",
                                 pt.M, pt.L),
         .unit = "-", .tolerance = {0.01, 0},
-        .justification = "grid.target_error is 1 %: the default run adds levels until its own estimate is "
-                         "below it, so its film must be within 1 % of the converged one",
+        .justification = "issue 19: the default answer within 1 % of the grid-converged film. grid.target_error "
+                         "is 0.5 %: the default run adds levels until its own estimate (from converged levels) "
+                         "is below it, a factor 2 of margin for an estimate",
         .tier = Tier::fast, .run = [pt](const CheckContext&) { return default_accuracy(pt.M, pt.L); }});
   return true;
 }();
@@ -97,13 +93,13 @@ const bool order_checks = [] {
     Registry::instance().add(CheckSpec{
         .id = fmt::format("ehl.grid_convergence.order_M{:g}_L{:g}", pt.M, pt.L), .section = section,
         .solver = solver, .reference = "second-order wedge and Poiseuille terms (stated order 2)",
-        .quantity = fmt::format("observed order of H_c, 257/513/1025 nodes, M = {:g}, L = {:g}", pt.M, pt.L),
+        .quantity = fmt::format("observed order of H_c, 1025/2049/4097 nodes, M = {:g}, L = {:g}", pt.M, pt.L),
         .unit = "-", .tolerance = {0.35, 0},
         .justification = "the discretisation is second order in the interior (first order only at the "
-                         "first interior node and at the free boundary, where P ≈ 0); the observed orders "
-                         "measured were 1.98–2.3, so 2 ± 0.35; a first-order scheme gives ~1",
+                         "first interior node and at the free boundary, where P ≈ 0); measured 2.01, 2.00 and "
+                         "1.83 at the three points on these grids, so 2 ± 0.35; a first-order scheme gives ~1",
         .tier = Tier::fast, .run = [pt](const CheckContext&) {
-          const auto s = grid_series(pt.M, pt.L, {257, 513, 1025});
+          const auto s = grid_series(pt.M, pt.L, asymptotic_series);
           return CheckValue{observed_order(s.H_c), 2.0,
                             {{"nodes", s.nodes}, {"H_c", s.H_c}, {"H_min", s.H_min},
                              {"p_max_over_p_h", s.p_max}, {"order_H_min", observed_order(s.H_min)},
@@ -113,13 +109,16 @@ const bool order_checks = [] {
   return true;
 }();
 
+// Venner & Lubrecht's line-contact multigrid reaches 0.1–0.2 a cycle; this W(2,1) design reaches
+// 0.35–0.38 on 513–2049 nodes and 0.25 on 4097–8193 at (10, 0) (eleventh session,
+// docs/ehl-model.md): the gap is a finding, recorded, not a pass.
 const RegisterCheck smoothing(CheckSpec{
     .id = "ehl.multigrid.convergence_factor", .section = section, .solver = solver,
-    .reference = "a V(2,1) cycle with a smoother (Venner & Lubrecht 2000: ~0.1–0.2 per cycle)",
+    .reference = "Venner & Lubrecht 2000: 0.1–0.2 per cycle with their line-contact smoother",
     .quantity = "mean per-cycle factor of the scaled residual, M = 10, L = 0, 2049 nodes, to 1e-9",
-    .unit = "-", .tolerance = {0.3, 0},
-    .justification = "measured 0.14–0.19 on 513–2049 nodes; the former damped-Newton 'line' step had "
-                     "(1 − ω)^ν ≈ 0.5–0.7; a factor above 0.3 means the smoother or the coarse grid broke",
+    .unit = "-", .tolerance = {0.05, 0},
+    .justification = "their band 0.15 ± 0.05; missed today: the W(2,1) design's factor is set by its limited "
+                     "changes and local treatments, not yet analysed mode by mode",
     .tier = Tier::fast, .run = [](const CheckContext&) {
       const LineContactProblem p(LineContactData::from_moes(10.0, 0.0));
       EhlOptions o;
@@ -127,9 +126,10 @@ const RegisterCheck smoothing(CheckSpec{
       o.stop = StopRule::residual;
       o.tolerance = 1e-9;
       const auto r = LineContactSolver(p, o).solve();
-      return CheckValue{r.convergence_factor, 0.0,
+      return CheckValue{r.convergence_factor, 0.15,
                         {{"cycles", r.cycles}, {"work_units", r.work_units}, {"residuals", r.residual_history}}};
-    }});
+    },
+    .recorded = 0.354, .recorded_tolerance = 0.05});
 
 }  // namespace
 
