@@ -80,13 +80,9 @@ void FasMultigrid::Impl::full_multigrid(EhlResult& r) {
     relax_spike(*levels_[k]);  // the cubic interpolation of a resolved spike overshoots (eighth session)
     cycle(k);
     record_fmg_level(r, k);
-    // With the grid chosen by the error target, a level whose film is still negative (heavy
-    // loads on coarse grids: no estimate) is not the end: finer levels may resolve it
-    // (tenth session, (1000, 0) positive from 2049 nodes). A fixed grid stops there.
-    if (!std::isfinite(r.error_estimate)) {
-      if (!o_.adaptive()) break;
-      continue;
-    }
+    // A level whose film is still negative (heavy loads on coarse grids: no estimate) is not
+    // the end: finer levels may resolve it (tenth session, (1000, 0) positive from 2049 nodes).
+    if (!std::isfinite(r.error_estimate)) continue;
     // Under the error rule every level is converged before the next: the estimate is then a
     // difference of discrete solutions. One cycle per level leaves algebraic errors larger than
     // the discretisation error in places (Martin's limit: H_min 0.504 after one cycle on 129
