@@ -13,7 +13,11 @@
 #include "ehl/deformation.h"
 #include "ehl/fas_multigrid.h"
 #include "ehl/line_contact_solver.h"
+#include "ehl/transient_mesh_ehl.h"
 #include "ehl_newton/ehl_newton.h"
+#include "geometry/gear_pair_geometry.h"
+#include "model/case_reader.h"
+#include "model/json_reader.h"
 
 namespace {
 
@@ -86,21 +90,43 @@ BENCHMARK(BM_EhlSteadySolve_M20_L10)->Arg(257)->Arg(1025)->Arg(4097)->Arg(16385)
 BENCHMARK(BM_EhlSteadySolve_M10_L17_5)->Arg(257)->Arg(1025)->Arg(4097)->Arg(16385)->Unit(benchmark::kMillisecond);
 
 /// The baseline: the independent Newton–Raphson reference (Houpert & Hamrock's direct method,
-/// dense Jacobian, reference/ehl_newton) on the same number of nodes, to its own convergence:
-/// the best non-multigrid method at hand, O(n³) a step. 4097 nodes and more are left out (a
-/// dense step there takes ~20 s); the ratio at 2049 nodes is the largest measured.
+/// dense Jacobian, reference/ehl_newton) to its own convergence on n nodes, reached as it must
+/// be: from n/4 and n/2 nodes, each solve started from the last one interpolated (from scratch
+/// it converges on 257 nodes at (10, 0) but not on 513 and more). The best non-multigrid
+/// method at hand, O(n³) a step; 2049 nodes and more are left out (~15 s a solve).
 void BM_EhlSteadySolve_baseline(benchmark::State& state) {
   const int nodes = static_cast<int>(state.range(0));
-  gearbench::reference::EhlNewtonResult r;
+  gearbench::reference::EhlNewtonGridStudy r;
   for (auto _ : state) {
-    r = gearbench::reference::ehl_newton_line_contact(10.0, 0.0, nodes);
-    benchmark::DoNotOptimize(r.H_min);
+    r = gearbench::reference::ehl_newton_grid_study(10.0, 0.0, (nodes - 1) / 4 + 1);
+    benchmark::DoNotOptimize(r.solves[2].H_min);
   }
-  state.counters["nodes"] = static_cast<double>(nodes);
+  state.counters["nodes"] = static_cast<double>(r.solves[2].nodes);
   state.counters["converged"] = r.converged ? 1.0 : 0.0;
-  state.counters["newton_steps"] = r.iterations;
+  state.counters["newton_steps"] = r.solves[0].iterations + r.solves[1].iterations + r.solves[2].iterations;
 }
-BENCHMARK(BM_EhlSteadySolve_baseline)->Arg(257)->Arg(513)->Arg(1025)->Arg(2049)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EhlSteadySolve_baseline)->Arg(257)->Arg(513)->Arg(1025)->Unit(benchmark::kMillisecond);
+
+/// Seed 004's transient path as in cases/ (200 implicit-Euler steps on 641 nodes, each by full
+/// multigrid to its discretisation error): the time per step and in total.
+void BM_EhlTransientSeed004(benchmark::State& state) {
+  const auto j = gearbench::model::read_json_file(std::string(GEARBENCH_SOURCE_DIR) + "/cases/seed004_transient_ehl.json");
+  gearbench::model::ObjectReader root(j, "");
+  const auto c = gearbench::model::read_gear_case(root);
+  const gearbench::geometry::GearPairGeometry g(c.gear_pair);
+  TransientMeshOptions o;
+  o.steps = 200;
+  TransientMeshResult r;
+  for (auto _ : state) {
+    r = TransientMeshEhl(g, *c.operating, LineContactData::from_gear_media(*c.materials, *c.lubricant), o).run();
+    benchmark::DoNotOptimize(r.h_min);
+  }
+  state.counters["steps"] = static_cast<double>(r.steps.size());
+  state.counters["ms_per_step"] = 1e3 * r.seconds / static_cast<double>(r.steps.size());
+  state.counters["work_units_per_step"] = r.work_units / static_cast<double>(r.steps.size());
+  state.counters["converged"] = r.converged ? 1.0 : 0.0;
+}
+BENCHMARK(BM_EhlTransientSeed004)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 /// Peak resident memory of a steady solve on n nodes (the issue asks for n = 16385): each
 /// iteration forks a child that builds the grid hierarchy and runs two V-cycles after full
