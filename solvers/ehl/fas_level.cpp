@@ -20,22 +20,42 @@ void FasMultigrid::Impl::update_film(Level& l) {
     for (std::size_t i = 0; i < l.n; ++i) l.H[i] += l.film_correction[i];
 }
 
+void FasMultigrid::Impl::update_film_window(Level& l, const FilmBase& base, std::size_t lo, std::size_t hi) const {
+  const double c = problem_.deformation_factor() / pi;
+  for (std::size_t k = lo; k <= hi; ++k) {
+    double shift = 0.0;
+    for (std::size_t j = lo; j <= hi; ++j)
+      shift += l.deformation.kernel(k > j ? k - j : j - k) * (l.P[j] - base.P[j]);
+    l.H[k] = base.H[k] - c * shift;
+  }
+}
+
+void FasMultigrid::Impl::update_node_coefficients(Level& l, std::size_t i) const {
+  const double rho = problem_.density(l.P[i]);
+  const double H = std::max(l.H[i], 0.0);
+  l.rho[i] = rho * l.wedge_factor[i];
+  l.rho_slope[i] = density_slope(l.P[i]) * l.wedge_factor[i];
+  l.eps[i] = l.flow_factor[i] * rho * H * H * H * std::exp(-viscosity_exponent_ * problem_.log_viscosity(l.P[i])) *
+             (1.0 / problem_.lambda());
+  l.eps_log_slope[i] = eps_log_slope(l.P[i]);
+}
+
 void FasMultigrid::Impl::update_coefficients(Level& l) {
-  const double inv_lambda = 1.0 / problem_.lambda();
   l.eps.resize(l.n);
   l.eps_log_slope.resize(l.n);
   l.rho_slope.resize(l.n);
-  for (std::size_t i = 0; i < l.n; ++i) {
-    const double rho = problem_.density(l.P[i]);
-    const double H = std::max(l.H[i], 0.0);
-    l.rho[i] = rho * l.wedge_factor[i];
-    l.rho_slope[i] = density_slope(l.P[i]) * l.wedge_factor[i];
-    l.eps[i] = l.flow_factor[i] * rho * H * H * H * std::exp(-viscosity_exponent_ * problem_.log_viscosity(l.P[i])) *
-               inv_lambda;
-    l.eps_log_slope[i] = eps_log_slope(l.P[i]);
+  l.eps_face_dP_left.resize(l.n - 1);
+  l.eps_face_dP_right.resize(l.n - 1);
+  update_coefficients_window(l, 0, l.n - 1);
+}
+
+void FasMultigrid::Impl::update_coefficients_window(Level& l, std::size_t lo, std::size_t hi) {
+  for (std::size_t i = lo; i <= hi; ++i) update_node_coefficients(l, i);
+  for (std::size_t i = lo; i < hi; ++i) {
+    l.eps_face[i] = 0.5 * (l.eps[i] + l.eps[i + 1]);
+    l.eps_face_dP_left[i] = 0.5 * l.eps[i] * l.eps_log_slope[i];
+    l.eps_face_dP_right[i] = 0.5 * l.eps[i + 1] * l.eps_log_slope[i + 1];
   }
-  for (std::size_t i = 0; i + 1 < l.n; ++i) l.eps_face[i] = 0.5 * (l.eps[i] + l.eps[i + 1]);
-  eps_face_derivatives(l);
 }
 
 double FasMultigrid::Impl::density_slope(double P) const {
@@ -73,15 +93,6 @@ ReynoldsCoefficients FasMultigrid::Impl::coefficients(const Level& l) const {
   c.eps_face_dP_right = &l.eps_face_dP_right;
   c.P = &l.P;
   return c;
-}
-
-void FasMultigrid::Impl::eps_face_derivatives(Level& l) {
-  l.eps_face_dP_left.resize(l.n - 1);
-  l.eps_face_dP_right.resize(l.n - 1);
-  for (std::size_t i = 0; i + 1 < l.n; ++i) {
-    l.eps_face_dP_left[i] = 0.5 * l.eps[i] * l.eps_log_slope[i];
-    l.eps_face_dP_right[i] = 0.5 * l.eps[i + 1] * l.eps_log_slope[i + 1];
-  }
 }
 
 double FasMultigrid::Impl::operator_at(const Level& l, std::size_t i) const {

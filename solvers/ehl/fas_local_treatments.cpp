@@ -15,10 +15,20 @@ void FasMultigrid::Impl::relax_spike(Level& l) {
   const auto w = static_cast<std::size_t>(o_.spike_window);
   update_film(l);
   update_coefficients(l);
+  node_sweeps_ += static_cast<double>(l.n);
   const auto s = spike_index(l.P);
   const std::size_t a = s > w ? s - w : 1;
   const std::size_t b = std::min(l.n - 2, s + w);
   const std::size_t m = b - a + 1;
+  // A trial changes P on a … b only: its film and coefficients are updated on the nodes the
+  // window's operator reads (the film two nodes upstream, ε one either side).
+  const FilmBase base{l.P, l.H};
+  const std::size_t lo = a >= 3 ? a - 3 : 0, hi = std::min(l.n - 1, b + 2);
+  const auto refresh = [&] {
+    update_film_window(l, base, lo, hi);
+    update_coefficients_window(l, lo, hi);
+    node_sweeps_ += static_cast<double>(hi - lo + 1);
+  };
   const auto merit = [&]() {
     double sum = 0.0;
     for (std::size_t i = a; i <= b; ++i) {
@@ -28,7 +38,8 @@ void FasMultigrid::Impl::relax_spike(Level& l) {
     }
     return sum;
   };
-  for (int st = 0; st < steps; ++st) {
+  bool descending = true;  // a step that no halving makes descend ends the solve
+  for (int st = 0; st < steps && descending; ++st) {
     const auto c = coefficients(l);
     const auto fs = film_sensitivity(l);
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(m, m);
@@ -50,18 +61,23 @@ void FasMultigrid::Impl::relax_spike(Level& l) {
       rhs(row) = r;
     }
     const Eigen::VectorXd x = A.partialPivLu().solve(rhs);
-    if (!x.allFinite()) return;
+    if (!x.allFinite()) break;
     const std::vector<double> P0 = l.P;
     const double m0 = merit();
     double theta = 1.0;
     for (int hv = 0; hv <= 6; ++hv, theta *= 0.5) {
       for (std::size_t i = a; i <= b; ++i) l.P[i] = std::max(0.0, P0[i] + theta * x(static_cast<Eigen::Index>(i - a)));
-      update_film(l);
-      update_coefficients(l);
+      refresh();
       if (merit() < m0) break;
-      if (hv == 6) { l.P = P0; update_film(l); update_coefficients(l); return; }
+      if (hv == 6) {
+        l.P = P0;
+        descending = false;
+      }
     }
   }
+  update_film(l);  // the film outside the window, which the trials left
+  update_coefficients(l);
+  node_sweeps_ += static_cast<double>(l.n);
 }
 
 void FasMultigrid::Impl::relax_free_boundary(Level& l) {
@@ -70,7 +86,11 @@ void FasMultigrid::Impl::relax_free_boundary(Level& l) {
   const auto w = static_cast<std::size_t>(o_.free_boundary_window);
   const std::size_t a = last > w ? last - w : 1;
   const std::size_t b = std::min(l.n - 1, last + beyond);
-  for (int s = 0; s < o_.free_boundary_sweeps; ++s) relax(l, a, b);
+  update_film(l);
+  const FilmBase base{l.P, l.H};
+  for (int s = 0; s < o_.free_boundary_sweeps; ++s) relax(l, a, b, &base);
+  update_film(l);  // the film outside the window, which the sweeps left
+  node_sweeps_ += static_cast<double>(l.n);
 }
 
 }  // namespace gearbench::ehl

@@ -117,10 +117,22 @@ class FasMultigrid::Impl {
   // --- level state (fas_level.cpp) --------------------------------------------
   void update_film(Level& l);
 
+  /// A pressure and its exact film, from which a window's film is updated locally.
+  struct FilmBase {
+    std::vector<double> P, H;
+  };
+  /// The film of nodes lo … hi when P has changed since `base` only on lo … hi:
+  /// H_k = base.H_k − (D/π)Σ_j K_|k−j|(P_j − base.P_j), O(window²) instead of the whole grid's
+  /// FFT; the film outside the window waits for the next full update.
+  void update_film_window(Level& l, const FilmBase& base, std::size_t lo, std::size_t hi) const;
+
   /// ε = ρ̄H³/(η̄λ) at the nodes and faces (ε_{i+½} the mean of the nodes') and ρ̄, from the
   /// grid's own P and H; ln η̄ rather than η̄, so that ε underflows to 0 where η̄ would
   /// overflow (ᾱP > 709 at a fine-grid Barus spike).
   void update_coefficients(Level& l);
+  /// The same for nodes lo … hi and the faces between them.
+  void update_coefficients_window(Level& l, std::size_t lo, std::size_t hi);
+  void update_node_coefficients(Level& l, std::size_t i) const;
 
   /// dρ̄/dP by a central difference.
   [[nodiscard]] double density_slope(double P) const;
@@ -132,10 +144,6 @@ class FasMultigrid::Impl {
   [[nodiscard]] static FilmSensitivity film_sensitivity(const Level& l);
 
   [[nodiscard]] ReynoldsCoefficients coefficients(const Level& l) const;
-
-  /// ∂ε_{i+½}/∂P_i and ∂ε_{i+½}/∂P_{i+1} of a live grid, ε_{i+½} = (ε_i + ε_{i+1})/2, from
-  /// the slopes d ln ε/dP at the nodes.
-  static void eps_face_derivatives(Level& l);
 
   /// The discrete Reynolds operator at interior node i (reynolds_stencil.h).
   [[nodiscard]] double operator_at(const Level& l, std::size_t i) const;
@@ -162,7 +170,9 @@ class FasMultigrid::Impl {
   /// lines' changes and film. Every change is limited to the exponential's linear range
   /// (limit_change); P ≥ 0. The film of the next nodes follows a Gauss–Seidel change at once
   /// through the kernel's near entries; the full film is recomputed after each pass.
-  void relax(Level& l, std::size_t first = 1, std::size_t end = 0);
+  /// With a `base`, the sweep covers first … end − 1 only and updates the film and the
+  /// coefficients in a window around it (update_film_window): the free boundary's sweeps.
+  void relax(Level& l, std::size_t first = 1, std::size_t end = 0, const FilmBase* base = nullptr);
 
   /// The scale-free relaxation switch: node i is relaxed by Gauss–Seidel where the Poiseuille
   /// diagonal (ε_{i−½} + ε_{i+½})/h² exceeds κ × the wedge term's own diagonal (the film's

@@ -11,11 +11,23 @@
 
 namespace gearbench::ehl {
 
-void FasMultigrid::Impl::relax(Level& l, std::size_t first, std::size_t end) {
+void FasMultigrid::Impl::relax(Level& l, std::size_t first, std::size_t end, const FilmBase* base) {
   if (end == 0) end = l.n - 1;
   const auto start = std::chrono::steady_clock::now();
-  update_film(l);
-  update_coefficients(l);
+  // The nodes whose film and coefficients the sweep reads: the changes reach first − 1 … end
+  // (the distribution), the operator reads the film two nodes upstream and ε one node either side.
+  const std::size_t lo = first >= 3 ? first - 3 : 0, hi = std::min(l.n - 1, end + 2);
+  const auto refresh_film = [&] {
+    if (base)
+      update_film_window(l, *base, lo, hi);
+    else
+      update_film(l);
+  };
+  refresh_film();
+  if (base)
+    update_coefficients_window(l, lo, hi);
+  else
+    update_coefficients(l);
   const auto c = coefficients(l);
   std::vector<double> jacobi_change(l.n, 0.0), jacobi_residual(l.n, 0.0);
   std::vector<char> is_jacobi(l.n, 0);
@@ -36,7 +48,7 @@ void FasMultigrid::Impl::relax(Level& l, std::size_t first, std::size_t end) {
   }
   for (auto& p : l.P) p = std::max(p, 0.0);
   l.P.front() = l.P.back() = 0.0;
-  update_film(l);
+  refresh_film();
   // Gauss–Seidel nodes after the Jacobi lines, so that they see (and answer) the lines'
   // distributed changes and film.
   for (std::size_t i = first; i < end; ++i) {
@@ -46,8 +58,8 @@ void FasMultigrid::Impl::relax(Level& l, std::size_t first, std::size_t end) {
     l.P[i] = std::max(0.0, old + limit_change(l, i, o_.omega_gauss_seidel * r / gauss_seidel_derivative(c, i)));
     move_film_near(l, i, l.P[i] - old);
   }
-  update_film(l);
-  node_sweeps_ += static_cast<double>(l.n);
+  refresh_film();
+  node_sweeps_ += static_cast<double>(hi - lo + 1);
   l.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
