@@ -131,8 +131,11 @@ TEST(Lubricant, ViscosityIndexInverse) {
       }
       previous = v;
     }
-    for (const double y : {2.5, 0.2 * g, 0.5 * g})
-      if (y > 2.0 && y < g) EXPECT_NEAR(*vi.nu100(g, vi.index(g, y)) / y, 1.0, 1e-11) << g << " " << y;
+    for (const double y : {2.5, 0.2 * g, 0.5 * g}) {
+      if (y > 2.0 && y < g) {
+        EXPECT_NEAR(*vi.nu100(g, vi.index(g, y)) / y, 1.0, 1e-11) << g << " " << y;
+      }
+    }
     EXPECT_FALSE(vi.nu100(g, range->first - 1.0));
   }
   EXPECT_NEAR(*vi.nu100(73.30, 92.43) / 8.86, 1.0, 1e-5);
