@@ -449,6 +449,9 @@ TEST(Cli, ThermalEhlRunsAndValidates) {
       {R"("solids": {"density_kg_m3": [7850]})", "solids.density_kg_m3"},
       {R"("thermal": {"heat_sources": "radiation"})", "thermal.heat_sources"},
       {R"("thermal": {"film_nodes": 2})", "thermal.film_nodes = 2"},
+      {R"("rheology": "bingham")", "rheology = \"bingham\": allowed values are newtonian, eyring"},
+      {R"("rheology": "eyring", "lubricant": {"eyring_stress_MPa": null})", "lubricant.eyring_stress_MPa"},
+      {R"("rheology": "eyring", "lubricant": {"eyring_stress_MPa": 0})", "lubricant.eyring_stress_MPa = 0"},
   }, "tehl_bad");
 
   auto capped = point;

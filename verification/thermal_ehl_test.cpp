@@ -152,6 +152,28 @@ TEST(ThermalLineContact, RejectsBadOptions) {
   EXPECT_THROW(ThermalLineContact(contact(-1.0, 2.0), rheology, steel(), small_grid()).solve(), InputError);
 }
 
+// A Ree–Eyring film (τ0 = 5 MPa) in the same sliding contact: its energy balance closes as the
+// Newtonian one does (same discretisation, 2 %), and the stress limit lowers both the traction
+// and the heating below the Newtonian film's; rheology "eyring" without an Eyring stress is
+// an input error.
+TEST(ThermalLineContact, EyringFilmLimitsTractionAndHeating) {
+  auto oil = roelands_oil();
+  oil.eyring_stress = 5e6;
+  const lubricant::ThermalRheology rheology(oil, T0);
+  const auto newtonian = ThermalLineContact(contact(2.5, 1.5), rheology, steel(), small_grid()).solve();
+  auto o = small_grid();
+  o.film.rheology = lubricant::ShearRheology::eyring;
+  const auto eyring = ThermalLineContact(contact(2.5, 1.5), rheology, steel(), o).solve();
+  EXPECT_EQ(eyring.rheology, lubricant::ShearRheology::eyring);
+  EXPECT_NEAR(eyring.heat.removed() / eyring.heat.generated(), 1.0, 0.02);
+  EXPECT_LT(std::abs(eyring.friction_coefficient), std::abs(newtonian.friction_coefficient));
+  EXPECT_LT(eyring.temperature_rise_max, newtonian.temperature_rise_max);
+  EXPECT_GT(eyring.temperature_rise_max, 1.0);
+  EXPECT_FALSE(eyring.friction_coefficient_eyring.has_value());  // no post-processing of an Eyring film
+  const lubricant::ThermalRheology no_stress(roelands_oil(), T0);
+  EXPECT_THROW(ThermalLineContact(contact(2.5, 1.5), no_stress, steel(), o).solve(), InputError);
+}
+
 // Eyring traction from a solved film: τ0 → ∞ gives back the solver's Newtonian traction
 // (the same integrand, asinh(x) = x + O(x³): 1e-9 relative at τ0 = 1e15 Pa); a finite τ0
 // lowers it, the more the smaller τ0 (asinh is concave and odd).

@@ -14,6 +14,8 @@ using nlohmann::json;
 ehl::ThermalEhlOptions read_thermal_options(model::ObjectReader& root) {
   ehl::ThermalEhlOptions o;
   o.grid = read_ehl_grid(root, o.grid);
+  if (root.optional_string("rheology", {"newtonian", "eyring"}).value_or("newtonian") == "eyring")
+    o.film.rheology = lubricant::ShearRheology::eyring;
   if (!root.has("thermal")) return o;
   auto t = root.object("thermal");
   o.film.film_nodes = t.optional_integer("film_nodes", 4, 200).value_or(o.film.film_nodes);
@@ -32,6 +34,7 @@ ehl::ThermalEhlOptions read_thermal_options(model::ObjectReader& root) {
 
 json thermal_result_json(const ehl::ThermalEhlResult& r, bool fields) {
   json out = {
+      {"rheology", r.rheology == lubricant::ShearRheology::eyring ? "eyring" : "newtonian"},
       {"h_central_m", finite_or_null(r.h_central)},
       {"h_min_m", finite_or_null(r.h_min)},
       {"x_h_min_m", finite_or_null(r.x_h_min)},

@@ -9,7 +9,8 @@
 
 namespace gearbench::app {
 
-/// The optional "thermal" section over the defaults, and the optional "grid" section.
+/// The optional "thermal" section over the defaults, the optional "grid" section and the
+/// top-level "rheology" ("newtonian", default, or "eyring": τ0 from lubricant.eyring_stress_MPa).
 ehl::ThermalEhlOptions read_thermal_options(model::ObjectReader& root);
 
 /// Figures, diagnostics and (with `fields`) the p, h and temperature fields of one contact.

@@ -12,23 +12,6 @@
 namespace gearbench::ehl {
 
 namespace {
-/// ∫₀¹ y dζ on uniform nodes: composite Simpson, with Simpson's 3/8 rule on the last three
-/// intervals when their number is odd; both are exact for cubics, so the isothermal
-/// integrals (quadratic in ζ) come out exact.
-double integrate_nodes(const std::vector<double>& y) {
-  const std::size_t n = y.size() - 1;  // intervals
-  const double d = 1.0 / static_cast<double>(n);
-  if (n == 1) return 0.5 * d * (y[0] + y[1]);
-  const std::size_t simpson_end = n % 2 == 0 ? n : n - 3;
-  double sum = 0.0;
-  for (std::size_t j = 0; j + 2 <= simpson_end; j += 2) sum += d / 3.0 * (y[j] + 4.0 * y[j + 1] + y[j + 2]);
-  if (simpson_end != n) {
-    const std::size_t j = simpson_end;
-    sum += 3.0 * d / 8.0 * (y[j] + 3.0 * y[j + 1] + 3.0 * y[j + 2] + y[j + 3]);
-  }
-  return sum;
-}
-
 /// ∫ y ds on graded nodes (trapezoid).
 double integrate_graded(const std::vector<double>& y, const std::vector<double>& s) {
   double sum = 0.0;
@@ -72,6 +55,14 @@ FilmTemperature::FilmTemperature(std::vector<double> x, double Ua, double Ub, do
       if (!(values[q] > 0.0) || !std::isfinite(values[q]))
         throw InputError(fmt::format("{}[{}] = {} must be a positive finite number", names[q], s, values[q]));
   }
+  if (o_.rheology == lubricant::ShearRheology::eyring) {
+    eyring_stress_ = rheology.data().eyring_stress;
+    if (!eyring_stress_)
+      throw InputError("rheology = \"eyring\": the lubricant needs its Eyring stress, lubricant.eyring_stress_MPa");
+    if (!(*eyring_stress_ > 0.0) || !std::isfinite(*eyring_stress_))
+      throw InputError(fmt::format("lubricant.eyring_stress_MPa = {} must be a positive finite number",
+                                   *eyring_stress_ * 1e-6));
+  }
   dx_ = x_[1] - x_[0];
   // Depth d: three thermal penetration lengths √(κ_s·L/U_s) of the slower solid over the
   // domain length L (the temperature rise of a moving half-space decays as erfc(s/(2√(κt)));
@@ -109,37 +100,12 @@ double FilmTemperature::dpdx_at(const std::vector<double>& p, std::size_t i, dou
 
 ColumnFlow FilmTemperature::column_flow(std::size_t i, double p, double dpdx, double h) const {
   const std::size_t nz = zeta_.size();
-  const double dz = 1.0 / static_cast<double>(nz - 1);
-  ColumnFlow c;
-  c.eta.resize(nz);
-  c.rho.resize(nz);
+  std::vector<double> eta(nz), rho(nz);
   for (std::size_t j = 0; j < nz; ++j) {
-    c.eta[j] = rheology_.viscosity(p, T_[i][j]);
-    c.rho[j] = rheology_.density(p, T_[i][j]);
+    eta[j] = rheology_.viscosity(p, T_[i][j]);
+    rho[j] = rheology_.density(p, T_[i][j]);
   }
-  c.f0.assign(nz, 0.0);
-  c.f1.assign(nz, 0.0);
-  for (std::size_t j = 1; j < nz; ++j) {  // trapezoid: exact for f0, f1 when η is uniform
-    c.f0[j] = c.f0[j - 1] + 0.5 * dz * (1.0 / c.eta[j - 1] + 1.0 / c.eta[j]);
-    c.f1[j] = c.f1[j - 1] + 0.5 * dz * (zeta_[j - 1] / c.eta[j - 1] + zeta_[j] / c.eta[j]);
-  }
-  c.eta_e = 1.0 / c.f0.back();
-  c.eta_e_prime = 1.0 / c.f1.back();
-  std::vector<double> y(nz);
-  c.rho_e = integrate_nodes(c.rho);
-  for (std::size_t j = 0; j < nz; ++j) y[j] = c.rho[j] * c.f0[j];
-  c.rho_e1 = integrate_nodes(y);
-  for (std::size_t j = 0; j < nz; ++j) y[j] = c.rho[j] * c.f1[j];
-  c.rho_e2 = integrate_nodes(y);
-  const double ratio = c.eta_e / c.eta_e_prime;
-  const double dU = Ub_ - Ua_;
-  c.u.resize(nz);
-  c.shear_rate.resize(nz);
-  for (std::size_t j = 0; j < nz; ++j) {
-    c.u[j] = Ua_ + dpdx * h * h * (c.f1[j] - ratio * c.f0[j]) + c.eta_e * dU * c.f0[j];
-    c.shear_rate[j] = (dpdx * h * (zeta_[j] - ratio) + c.eta_e * dU / h) / c.eta[j];
-  }
-  return c;
+  return ehl::column_flow(zeta_, std::move(eta), std::move(rho), Ua_, Ub_, dpdx, h, eyring_stress_);
 }
 
 std::vector<double> FilmTemperature::mass_flux_profile(const ColumnFlow& flow, double h) const {
@@ -178,22 +144,29 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
   };
 
   // Heat source S = S* + S'·(T − T*) about the last temperature T* (Patankar 1980, §4.2.5):
-  // shear heating η(∂u/∂z)² at the frozen shear rate falls with temperature as η does,
-  // S' = S·∂ln η/∂T < 0, which goes on the diagonal; without it the first sweep of a
+  // shear heating τ·∂u/∂z at the frozen shear rate falls with temperature as the stress does,
+  // S' = S·∂ln τ/∂T < 0, which goes on the diagonal; without it the first sweep of a
   // sliding contact overshoots (cold, viscous film → huge heating → hot, thin oil → ...).
-  // Compression work stays explicit.
+  // Newtonian: ∂ln τ/∂T = ∂ln η/∂T. Ree–Eyring, τ = τ0·asinh(ηγ̇/τ0) at fixed γ̇:
+  // ∂ln τ/∂T = [tanh(s)/s]·∂ln η/∂T with s = τ/τ0 (1 at s = 0). The fixed point does not
+  // depend on S′; it only keeps the sweeps stable. Compression work stays explicit.
   struct Source {
     double value = 0.0, slope = 0.0;  // S*, S' ≤ 0
+  };
+  auto stress_response = [&](double tau) {  // ∂ln τ/∂ln η at fixed shear rate
+    if (!eyring_stress_ || tau == 0.0) return 1.0;
+    const double s = tau / *eyring_stress_;
+    return std::tanh(s) / s;
   };
   auto source = [&](std::size_t j) {
     Source S;
     const double T = T_[i][j];
     if (o_.shear_heating) {
-      const double heating = flow.eta[j] * flow.shear_rate[j] * flow.shear_rate[j];
+      const double heating = flow.stress[j] * flow.shear_rate[j];
       const double dT = 1e-3;
-      const double dln_eta = (std::log(rheology_.viscosity(p[i], T + dT)) - std::log(flow.eta[j])) / dT;
+      const double dln_eta = (std::log(rheology_.viscosity(p[i], T + dT)) - std::log(flow.viscosity[j])) / dT;
       S.value += heating;
-      S.slope += std::min(0.0, heating * dln_eta);
+      S.slope += std::min(0.0, heating * stress_response(flow.stress[j]) * dln_eta);
     }
     if (o_.compression) S.value -= T * rheology_.thermal_expansion(p[i], T) * flow.u[j] * dpdx;
     return S;
@@ -311,16 +284,16 @@ HeatBalance FilmTemperature::heat_balance(const std::vector<double>& p, const st
     const double w = (i == 0 || i + 1 == n) ? 0.5 * dx_ : dx_;
     const double dpdx = dpdx_at(p, i, dx_);
     const ColumnFlow flow = column_flow(i, p[i], dpdx, h[i]);
-    for (std::size_t j = 0; j < nz; ++j) y[j] = flow.eta[j] * flow.shear_rate[j] * flow.shear_rate[j];
-    if (o_.shear_heating) hb.shear_heating += w * h[i] * integrate_nodes(y);
+    for (std::size_t j = 0; j < nz; ++j) y[j] = flow.stress[j] * flow.shear_rate[j];
+    if (o_.shear_heating) hb.shear_heating += w * h[i] * film_integral(y);
     for (std::size_t j = 0; j < nz; ++j)
       y[j] = -T_[i][j] * rheology_.thermal_expansion(p[i], T_[i][j]) * flow.u[j] * dpdx;
-    if (o_.compression) hb.compression += w * h[i] * integrate_nodes(y);
+    if (o_.compression) hb.compression += w * h[i] * film_integral(y);
     for (int body = 0; body < 2; ++body)
       hb.depth_loss[body] += w * solids_.conductivity[body] * (Ts_[body][i][ns - 2] - T0_) / (s_[ns - 1] - s_[ns - 2]);
     if (i + 1 == n) {
       for (std::size_t j = 0; j < nz; ++j) y[j] = flow.rho[j] * c * flow.u[j] * (T_[i][j] - T0_);
-      hb.film_outflow = h[i] * integrate_nodes(y);
+      hb.film_outflow = h[i] * film_integral(y);
     }
   }
   for (int body = 0; body < 2; ++body) {

@@ -9,17 +9,20 @@
 // The solids are moving half-spaces cut at depth d where T = T0:
 //   ρ_s c_s U_s ∂T/∂x = k_s ∂²T/∂s²,
 // with temperature and heat-flux continuity at both walls, T0 where the oil flows in.
-// Newtonian velocity profile with the effective viscosities of the generalized Reynolds
-// equation (seed 001 eqs for u and ∂u/∂z):
-//   u = U_a + ∂p/∂x·h²·[f1(ζ) − (η_e/η′_e)·f0(ζ)] + η_e(U_b − U_a)·f0(ζ),
-//   f0 = ∫₀^ζ dζ'/η,  f1 = ∫₀^ζ ζ' dζ'/η,  η_e = 1/f0(1),  η′_e = 1/f1(1).
+// Velocity profile and shear stress across the film from column_flow.h (seed 001's
+// Newtonian profile with the effective viscosities of the generalized Reynolds equation, or
+// the same with the Ree–Eyring equivalent viscosity); the shear heating is τ·∂u/∂z of that
+// profile.
 // Discretisation: first-order upwind in x (backward where u ≥ 0, forward in reverse flow),
 // second-order differences across the film and into the solids (quadratically graded
 // solid nodes), half-cell energy balances at the walls; each column is one tridiagonal
 // solve (GSL), the columns are swept Gauss–Seidel fashion from the inlet.
 #include <array>
+#include <optional>
 #include <vector>
 
+#include "column_flow.h"
+#include "lubricant/rheology.h"
 #include "lubricant/thermal_rheology.h"
 #include "model/materials.h"
 
@@ -29,27 +32,15 @@ struct FilmTemperatureOptions {
   int film_nodes = 10;        ///< nodes across the film (seed 001: 10)
   int solid_nodes = 14;       ///< nodes into each solid, surface and depth included (seed 001: 14)
   double depth = 0.0;         ///< d [m]: T = T0 below it; 0 picks the default (see .cpp)
-  bool shear_heating = true;  ///< η(∂u/∂z)² in the film
+  bool shear_heating = true;  ///< τ·∂u/∂z in the film
+  /// Shear response of the film; Ree–Eyring takes τ0 from the lubricant's Eyring stress.
+  lubricant::ShearRheology rheology = lubricant::ShearRheology::newtonian;
   bool compression = true;    ///< −(T/ρ)(∂ρ/∂T)·u·∂p/∂x in the film
-};
-
-/// The flow across the film at one column, for a given temperature profile.
-struct ColumnFlow {
-  std::vector<double> eta, rho, u, shear_rate;  ///< per film node
-  std::vector<double> f0, f1;                   ///< ∫dζ/η, ∫ζdζ/η from the wall a
-  double eta_e = 0.0, eta_e_prime = 0.0;        ///< η_e, η′_e [Pa·s]
-  double rho_e = 0.0, rho_e1 = 0.0, rho_e2 = 0.0;  ///< ρ_e, ρ′_e·η-scaled, ρ″_e (ζ form)
-  /// (ρ/η)_e = 12(η_e·ρ′_e/η′_e − ρ″_e) [kg·s/m⁴·…]: the Poiseuille coefficient.
-  [[nodiscard]] double rho_over_eta_e() const { return 12.0 * (eta_e * rho_e1 / eta_e_prime - rho_e2); }
-  /// ρ* = [ρ′_e·η_e·(U_b − U_a) + ρ_e·U_a]/U: the wedge density.
-  [[nodiscard]] double rho_star(double Ua, double Ub) const {
-    return (rho_e1 * eta_e * (Ub - Ua) + rho_e * Ua) / (0.5 * (Ua + Ub));
-  }
 };
 
 /// Heat budget of the contact per unit length [W/m].
 struct HeatBalance {
-  double shear_heating = 0.0;    ///< ∫∫ η(∂u/∂z)² dz dx
+  double shear_heating = 0.0;    ///< ∫∫ τ·∂u/∂z dz dx
   double compression = 0.0;      ///< ∫∫ −(T/ρ)(∂ρ/∂T)u ∂p/∂x dz dx
   double film_outflow = 0.0;     ///< ∫ ρcu(T − T0) dz at the outlet
   std::array<double, 2> solid_outflow{};  ///< ρ_s c_s U_s ∫(T − T0) ds at the outlet
@@ -100,6 +91,7 @@ class FilmTemperature {
   model::ThermalSolids solids_;
   FilmTemperatureOptions o_;
   double T0_ = 0.0, depth_ = 0.0;
+  std::optional<double> eyring_stress_;                ///< τ0 [Pa] of a Ree–Eyring film (none: Newtonian)
   std::vector<double> zeta_, s_;
   std::vector<std::vector<double>> T_;                 ///< film [i][j]
   std::array<std::vector<std::vector<double>>, 2> Ts_; ///< solids [body][i][k]

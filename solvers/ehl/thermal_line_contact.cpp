@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <fmt/format.h>
 
 #include "fas_multigrid.h"
@@ -76,6 +77,7 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
   const LineContactProblem problem(data_);
   const EhlResult isothermal = LineContactSolver(problem, options_.grid).try_solve();
   ThermalEhlResult r;
+  r.rheology = options_.film.rheology;
   r.isothermal_h_central = isothermal.h_central;
   r.isothermal_h_min = isothermal.h_min;
   r.isothermal_p_max = isothermal.p_max;
@@ -100,6 +102,8 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
   state.flow_factor.assign(n, 1.0);
   state.wedge_factor.assign(n, 1.0);
   double h_min_before = isothermal.h_min;
+  double relaxation = options_.factor_relaxation;
+  double change_before = std::numeric_limits<double>::infinity();
   bool temperature_settled = false;
   for (int it = 0; it < options_.max_iterations; ++it) {
     for (std::size_t i = 0; i < n; ++i) {
@@ -114,8 +118,8 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
       const double rho_iso = rheology_.density(p[i], T0), eta_iso = rheology_.viscosity(p[i], T0);
       const double flow_factor = flow.rho_over_eta_e() * eta_iso / rho_iso;
       const double wedge_factor = flow.rho_star(data_.u1, data_.u2) / rho_iso;
-      state.flow_factor[i] += options_.factor_relaxation * (flow_factor - state.flow_factor[i]);
-      state.wedge_factor[i] += options_.factor_relaxation * (wedge_factor - state.wedge_factor[i]);
+      state.flow_factor[i] += relaxation * (flow_factor - state.flow_factor[i]);
+      state.wedge_factor[i] += relaxation * (wedge_factor - state.wedge_factor[i]);
     }
     // A few cycles per iteration while the temperature still moves; the iteration ends only
     // on a pressure solve that met the multigrid tolerance.
@@ -126,6 +130,9 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
     r.work_units += next.work_units;
     ++r.iterations;
     const double change = largest_change(field.film(), before);
+    // A growing temperature change means the coupling overshoots: halve the relaxation.
+    if (change > change_before) relaxation = std::max(0.5 * relaxation, options_.factor_relaxation / 64.0);
+    change_before = change;
     r.temperature_change_history.push_back(change);
     r.h_min_history.push_back(next.h_min);
     current = std::move(next);
@@ -187,21 +194,24 @@ void ThermalLineContact::fill_figures(const LineContactProblem& problem, const E
     r.wall_temperature_rise_max[0] = std::max(r.wall_temperature_rise_max[0], r.film_temperature[i][0] - T0);
     r.wall_temperature_rise_max[1] = std::max(r.wall_temperature_rise_max[1], r.film_temperature[i][nz - 1] - T0);
   }
-  // Traction on surface a, τ = η·∂u/∂z at ζ = 0, where the film is pressurised (as the
-  // isothermal solver: the cavitated film carries no full-film shear).
+  // Traction on surface a, the film's wall stress τ_a (η·∂u/∂z of a Newtonian film, the
+  // Ree–Eyring stress of an Eyring film), where the film is pressurised (as the isothermal
+  // solver: the cavitated film carries no full-film shear). A Newtonian film with an Eyring
+  // stress also gives τ0·asinh(τ_a/τ0) of its Newtonian stress (post-processing).
   const double dx = r.x[1] - r.x[0];
-  double newtonian = 0.0, eyring = 0.0;
-  const auto tau0 = rheology_.data().eyring_stress;
+  double wall = 0.0, limited = 0.0;
+  const auto tau0 = options_.film.rheology == lubricant::ShearRheology::newtonian ? rheology_.data().eyring_stress
+                                                                                  : std::nullopt;
   for (std::size_t i = 1; i + 1 < n; ++i) {
     if (r.p[i] <= 0.0 || r.h[i] <= 0.0) continue;
     const ColumnFlow flow = field.column_flow(i, r.p, r.h);
-    const double tau = flow.eta[0] * flow.shear_rate[0];
-    newtonian += tau * dx;
-    if (tau0) eyring += *tau0 * std::asinh(tau / *tau0) * dx;
+    const double tau = flow.stress[0];
+    wall += tau * dx;
+    if (tau0) limited += *tau0 * std::asinh(tau / *tau0) * dx;
   }
-  r.friction_force = newtonian;
-  r.friction_coefficient = newtonian / data_.load_per_length;
-  if (tau0) r.friction_coefficient_eyring = eyring / data_.load_per_length;
+  r.friction_force = wall;
+  r.friction_coefficient = wall / data_.load_per_length;
+  if (tau0) r.friction_coefficient_eyring = limited / data_.load_per_length;
 }
 
 }  // namespace gearbench::ehl

@@ -13,9 +13,11 @@
 // solution is the coupled one; freezing them only changes the path to it. Temperature lives
 // on the finest pressure grid (the coarse grids inject its factors), a simplification of
 // seed 001's finest-and-coarsest scheme.
-// Traction: Newtonian wall shear from the thermal velocity profile; optionally an Eyring
-// limit τ = τ0·asinh(τ_N/τ0) applied to that shear (post-processing: the film equations stay
-// Newtonian, which is accurate for the film and overestimates shear heating at high slip).
+// Rheology (options.film.rheology): Newtonian, or Ree–Eyring inside the film, where the
+// equivalent viscosity τ/γ̇ enters the generalized-Reynolds factors, the velocity profile and
+// the shear heating τ·∂u/∂z (column_flow.h). Traction: the film's wall stress on surface a;
+// a Newtonian film with an Eyring stress also reports τ0·asinh(τ_N/τ0) of its Newtonian wall
+// stress (post-processing, `friction_coefficient_eyring`).
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,14 +49,15 @@ struct ThermalEhlOptions {
 };
 
 struct ThermalEhlResult {
+  lubricant::ShearRheology rheology = lubricant::ShearRheology::newtonian;  ///< of the film solved
   // Figures (SI).
   double h_central = 0.0, h_min = 0.0, x_h_min = 0.0, p_max = 0.0;
   double temperature_rise_max = 0.0;        ///< film, max(T − T0) [K]
   double x_temperature_rise_max = 0.0;      ///< its position [m]
   std::array<double, 2> wall_temperature_rise_max{};  ///< surfaces a (pinion) and b [K]
-  double friction_force = 0.0;              ///< Newtonian traction on surface a, per length [N/m]
+  double friction_force = 0.0;              ///< traction on surface a, per length [N/m]
   double friction_coefficient = 0.0;
-  std::optional<double> friction_coefficient_eyring;
+  std::optional<double> friction_coefficient_eyring;  ///< Newtonian film with τ0: post-processed limit
   // Isothermal solution at T0 (the start), for comparison.
   double isothermal_h_central = 0.0, isothermal_h_min = 0.0, isothermal_p_max = 0.0;
   double isothermal_friction_coefficient = 0.0;

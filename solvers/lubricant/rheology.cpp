@@ -20,4 +20,13 @@ double roelands_z_from_alpha(double eta0, double alpha) {
 
 double dowson_higginson_density_ratio(double p) { return (5.9e8 + 1.34 * p) / (5.9e8 + p); }
 
+double eyring_shear_rate(double tau, double eta, double eyring_stress) {
+  return eyring_stress / eta * std::sinh(tau / eyring_stress);
+}
+
+double eyring_equivalent_viscosity(double tau, double eta, double eyring_stress) {
+  const double s = tau / eyring_stress;
+  return s == 0.0 ? eta : eta * s / std::sinh(s);
+}
+
 }  // namespace gearbench::lubricant

@@ -27,4 +27,17 @@ double roelands_z_from_alpha(double eta0, double alpha);
 /// Dowson & Higginson (1966) compressibility: ρ/ρ0 = (5.9e8 + 1.34·p)/(5.9e8 + p), p in Pa.
 double dowson_higginson_density_ratio(double p);
 
+/// The shear response of the film: Newtonian (τ = η·γ̇) or Ree–Eyring.
+enum class ShearRheology { newtonian, eyring };
+
+/// Ree–Eyring shear rate at the shear stress τ (Eyring 1936; the sinh law as used for EHL
+/// films by Johnson & Tevaarwerk, Proc. R. Soc. A 356 (1977) 215, and in thermal EHL by Yang
+/// & Wen, J. Tribol. 112 (1990) 631): γ̇ = (τ0/η)·sinh(τ/τ0), the inverse of
+/// τ = τ0·asinh(η·γ̇/τ0). η is the low-shear viscosity η(p, T), τ0 the Eyring stress [Pa].
+double eyring_shear_rate(double tau, double eta, double eyring_stress);
+/// The Ree–Eyring equivalent viscosity η* = τ/γ̇ = η·(τ/τ0)/sinh(τ/τ0) (η at τ = 0): the
+/// viscosity that makes a Newtonian film law carry the Eyring stress (Yang & Wen's
+/// "equivalent viscosity", Acta Mech. Sinica 6 (1990) 289).
+double eyring_equivalent_viscosity(double tau, double eta, double eyring_stress);
+
 }  // namespace gearbench::lubricant

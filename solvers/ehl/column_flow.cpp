@@ -1,0 +1,104 @@
+#include "column_flow.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+#include "lubricant/rheology.h"
+#include "model/errors.h"
+
+namespace gearbench::ehl {
+
+double film_integral(const std::vector<double>& y) {
+  const std::size_t n = y.size() - 1;  // intervals
+  const double d = 1.0 / static_cast<double>(n);
+  if (n == 1) return 0.5 * d * (y[0] + y[1]);
+  const std::size_t simpson_end = n % 2 == 0 ? n : n - 3;
+  double sum = 0.0;
+  for (std::size_t j = 0; j + 2 <= simpson_end; j += 2) sum += d / 3.0 * (y[j] + 4.0 * y[j + 1] + y[j + 2]);
+  if (simpson_end != n) {
+    const std::size_t j = simpson_end;
+    sum += 3.0 * d / 8.0 * (y[j] + 3.0 * y[j + 1] + 3.0 * y[j + 2] + y[j + 3]);
+  }
+  return sum;
+}
+
+double eyring_wall_stress(const std::vector<double>& zeta, const std::vector<double>& viscosity, double sliding,
+                          double dpdx, double h, double eyring_stress) {
+  const std::size_t nz = zeta.size();
+  const double dz = 1.0 / static_cast<double>(nz - 1);
+  const double mean_rate = sliding / h;  // (U_b − U_a)/h: the column's mean shear rate
+  // Bracket: where every node shears at most (at least) at the mean rate, the trapezoidal
+  // mean falls below (above) it; γ̇_j(τ) = mean_rate at τ_j = τ0·asinh(η_j·rate/τ0) − p_x·h·ζ_j.
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t j = 0; j < nz; ++j) {
+    const double tau = eyring_stress * std::asinh(viscosity[j] * mean_rate / eyring_stress) - dpdx * h * zeta[j];
+    lo = std::min(lo, tau);
+    hi = std::max(hi, tau);
+  }
+  const double scale = std::max(std::abs(lo), std::abs(hi));
+  if (!(hi - lo > 1e-14 * scale)) return lo;
+  // Safeguarded Newton on F(τ_a) = Σ w_j·γ̇_j − rate, F′ = Σ w_j·cosh(τ_j/τ0)/η_j > 0 (a step
+  // leaving the bracket, or an overflowing sinh, is replaced by bisection).
+  double tau_a = 0.5 * (lo + hi);
+  for (int it = 0; it < 200; ++it) {
+    double F = -mean_rate, dF = 0.0;
+    for (std::size_t j = 0; j < nz; ++j) {
+      const double w = (j == 0 || j + 1 == nz) ? 0.5 * dz : dz;
+      const double tau = tau_a + dpdx * h * zeta[j];
+      F += w * lubricant::eyring_shear_rate(tau, viscosity[j], eyring_stress);
+      dF += w * std::cosh(tau / eyring_stress) / viscosity[j];
+    }
+    if (F == 0.0) return tau_a;
+    (F < 0.0 ? lo : hi) = tau_a;
+    double next = tau_a - F / dF;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - tau_a) <= 1e-13 * scale) return next;
+    tau_a = next;
+  }
+  throw ConvergenceError(fmt::format("Eyring wall stress of a film column did not converge in 200 steps "
+                                     "(τ0 = {:.4g} Pa, bracket [{:.6g}, {:.6g}] Pa)", eyring_stress, lo, hi));
+}
+
+ColumnFlow column_flow(const std::vector<double>& zeta, std::vector<double> viscosity, std::vector<double> density,
+                       double Ua, double Ub, double dpdx, double h, std::optional<double> eyring_stress) {
+  const std::size_t nz = zeta.size();
+  const double dz = 1.0 / static_cast<double>(nz - 1);
+  const double dU = Ub - Ua;
+  ColumnFlow c;
+  c.viscosity = std::move(viscosity);
+  c.rho = std::move(density);
+  c.eta_star = c.viscosity;
+  if (eyring_stress) {
+    const double tau_a = eyring_wall_stress(zeta, c.viscosity, dU, dpdx, h, *eyring_stress);
+    for (std::size_t j = 0; j < nz; ++j)
+      c.eta_star[j] = lubricant::eyring_equivalent_viscosity(tau_a + dpdx * h * zeta[j], c.viscosity[j], *eyring_stress);
+  }
+  c.f0.assign(nz, 0.0);
+  c.f1.assign(nz, 0.0);
+  for (std::size_t j = 1; j < nz; ++j) {  // trapezoid: exact for f0, f1 when η* is uniform
+    c.f0[j] = c.f0[j - 1] + 0.5 * dz * (1.0 / c.eta_star[j - 1] + 1.0 / c.eta_star[j]);
+    c.f1[j] = c.f1[j - 1] + 0.5 * dz * (zeta[j - 1] / c.eta_star[j - 1] + zeta[j] / c.eta_star[j]);
+  }
+  c.eta_e = 1.0 / c.f0.back();
+  c.eta_e_prime = 1.0 / c.f1.back();
+  std::vector<double> y(nz);
+  c.rho_e = film_integral(c.rho);
+  for (std::size_t j = 0; j < nz; ++j) y[j] = c.rho[j] * c.f0[j];
+  c.rho_e1 = film_integral(y);
+  for (std::size_t j = 0; j < nz; ++j) y[j] = c.rho[j] * c.f1[j];
+  c.rho_e2 = film_integral(y);
+  const double ratio = c.eta_e / c.eta_e_prime;
+  c.u.resize(nz);
+  c.shear_rate.resize(nz);
+  c.stress.resize(nz);
+  for (std::size_t j = 0; j < nz; ++j) {
+    c.u[j] = Ua + dpdx * h * h * (c.f1[j] - ratio * c.f0[j]) + c.eta_e * dU * c.f0[j];
+    c.shear_rate[j] = (dpdx * h * (zeta[j] - ratio) + c.eta_e * dU / h) / c.eta_star[j];
+    c.stress[j] = c.eta_star[j] * c.shear_rate[j];
+  }
+  return c;
+}
+
+}  // namespace gearbench::ehl
