@@ -1,0 +1,163 @@
+// Thermal EHL with a Ree–Eyring film (issue 26): its two limits (τ0 → ∞ is the Newtonian
+// thermal solver, no heat sources with τ0 → ∞ the isothermal one), its heat balance, the
+// trends with the Eyring stress, the traction curve μ(SRR) with its thermal peak, and the
+// issue's 1 MN/m steel roller. The contact is the sliding one of tehl_checks.cpp
+// (cases/tehl_point_sliding.json) with τ0 = 5 MPa unless a check says otherwise.
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <optional>
+
+#include "check_registry.h"
+#include "ehl/thermal_line_contact.h"
+#include "model/case_reader.h"
+#include "model/json_reader.h"
+#include "support/thermal_fixtures.h"
+
+namespace gearbench::verification {
+namespace {
+
+using namespace gearbench::ehl;
+
+const std::string section = "Thermal EHL (TEHL): Ree–Eyring film";
+const std::string solver = "ehl.thermal_line_contact";
+
+struct Film {
+  double srr = 1.0;
+  std::optional<double> eyring_stress = 5e6;  ///< τ0 [Pa]; none: a Newtonian film
+  int nodes = 641;
+  bool heat = true;
+};
+
+ThermalEhlResult solve(const Film& f) {
+  auto oil = testing_support::mineral_oil();
+  oil.eyring_stress = f.eyring_stress;
+  const lubricant::ThermalRheology rheology(oil, testing_support::mineral_oil_inlet_temperature);
+  ThermalEhlOptions o;
+  o.grid.nodes = f.nodes;
+  o.film.shear_heating = o.film.compression = f.heat;
+  if (f.eyring_stress) o.film.rheology = lubricant::ShearRheology::eyring;
+  return ThermalLineContact(testing_support::sliding_contact(f.srr), rheology, testing_support::steel_solids(), o)
+      .solve();
+}
+
+double relative(double a, double b) { return std::abs(a / b - 1.0); }
+
+const RegisterCheck newtonian_limit(CheckSpec{
+    .id = "tehl.eyring.newtonian_limit", .section = section, .solver = solver,
+    .reference = "the Newtonian thermal solver (same contact, SRR 1, 641 nodes)",
+    .quantity = "largest relative difference of h_min, h_c, the film's largest temperature rise and μ between "
+                "an Eyring film with τ0 = 1e6 MPa and the Newtonian film",
+    .unit = "-", .tolerance = {1e-5, 0},
+    .justification = "the model difference is η*/η − 1 ≈ −(τ/τ0)²/6, below 1e-7 for this contact's stresses "
+                     "(≤ 1e9 Pa); what is left is the wall stress's root tolerance (1e-13) and the paths of two "
+                     "iterations that stop on h_min settled to 1e-5: that is the tolerance",
+    .tier = Tier::fast,
+    .run = [](const CheckContext&) {
+      const auto n = solve({.srr = 1.0, .eyring_stress = std::nullopt});
+      const auto e = solve({.srr = 1.0, .eyring_stress = 1e12});
+      const double gap = std::max({relative(e.h_min, n.h_min), relative(e.h_central, n.h_central),
+                                   relative(e.temperature_rise_max, n.temperature_rise_max),
+                                   relative(e.friction_coefficient, n.friction_coefficient)});
+      return CheckValue{gap, 0.0, {{"newtonian", {{"h_min_m", n.h_min}, {"dT_K", n.temperature_rise_max},
+                                                   {"mu", n.friction_coefficient}, {"iterations", n.iterations}}},
+                                   {"eyring_1e6_MPa", {{"h_min_m", e.h_min}, {"dT_K", e.temperature_rise_max},
+                                                       {"mu", e.friction_coefficient}, {"iterations", e.iterations}}}}};
+    }});
+
+const RegisterCheck isothermal_limit(CheckSpec{
+    .id = "tehl.eyring.isothermal_limit", .section = section, .solver = solver,
+    .reference = "isothermal FAS multigrid (same contact, T = T0, Newtonian)",
+    .quantity = "h_min of an Eyring film with τ0 = 1e6 MPa and heat sources off, relative to the isothermal "
+                "solver (SRR 1, 321 nodes)",
+    .unit = "-", .tolerance = {1e-6, 0},
+    .justification = "without heat sources T = T0 to rounding (a rise above 1e-9 K fails the check) and with "
+                     "τ0 → ∞ the film is Newtonian (η*/η − 1 < 1e-7), so the factors are 1 and what remains is "
+                     "the multigrid's residual tolerance, as for the Newtonian film (tehl.isothermal_limit). The "
+                     "same film at τ0 = 5 MPa is recorded: shear thinning alone, without heat",
+    .tier = Tier::fast,
+    .run = [](const CheckContext&) {
+      const auto r = solve({.srr = 1.0, .eyring_stress = 1e12, .nodes = 321, .heat = false});
+      if (!(r.temperature_rise_max < 1e-9))
+        throw std::runtime_error(fmt::format("heat sources off, yet the film heats by {} K", r.temperature_rise_max));
+      const auto thinned = solve({.srr = 1.0, .eyring_stress = 5e6, .nodes = 321, .heat = false});
+      return CheckValue{r.h_min / r.isothermal_h_min - 1.0, 0.0,
+                        {{"isothermal_eyring_5MPa_h_min_ratio", thinned.h_min / thinned.isothermal_h_min},
+                         {"isothermal_eyring_5MPa_mu", thinned.friction_coefficient},
+                         {"isothermal_newtonian_mu", r.isothermal_friction_coefficient}}};
+    }});
+
+const RegisterCheck heat_balance(CheckSpec{
+    .id = "tehl.eyring.heat_balance", .section = section, .solver = solver,
+    .reference = "conservation of energy: heat generated = heat carried out by film and solids + lost at depth",
+    .quantity = "relative imbalance of the Eyring film (τ0 5 MPa) at SRR 1 (641 nodes)", .unit = "-",
+    .tolerance = {0.02, 0},
+    .justification = "the same discretisation as the Newtonian film (tehl.heat_balance: first-order upwinding, "
+                     "non-conservative convection, O(Δx)); the heating τ·∂u/∂z is integrated with the rule that "
+                     "computes it, so the Eyring film is held to the same 2 %",
+    .tier = Tier::fast,
+    .run = [](const CheckContext&) {
+      const auto r = solve({});
+      return CheckValue{r.heat.removed() / r.heat.generated() - 1.0, 0.0,
+                        {{"generated_W_per_m", r.heat.generated()}, {"film_outflow_W_per_m", r.heat.film_outflow},
+                         {"solid_outflow_W_per_m", r.heat.solid_outflow}, {"depth_loss_W_per_m", r.heat.depth_loss},
+                         {"dT_K", r.temperature_rise_max}, {"mu", r.friction_coefficient}}};
+    }});
+
+const RegisterCheck stress_trends(CheckSpec{
+    .id = "tehl.eyring.stress_trends", .section = section, .solver = solver,
+    .reference = "Eyring film physics (a lower limiting stress carries less shear and so heats less)",
+    .quantity = "violations of: the film's largest temperature rise and |μ| both fall at every step of "
+                "τ0 = ∞ (Newtonian), 20, 10, 5, 2 MPa (SRR 1, 321 nodes)",
+    .unit = "-", .tolerance = {0.0, 0},
+    .justification = "τ = τ0·asinh(ηγ̇/τ0) falls with τ0 at every shear rate, so traction and heating must fall "
+                     "at every step; a single rise fails the check",
+    .tier = Tier::fast,
+    .run = [](const CheckContext&) {
+      const std::vector<std::optional<double>> stresses{std::nullopt, 20e6, 10e6, 5e6, 2e6};
+      int violations = 0;
+      nlohmann::json table = nlohmann::json::array();
+      double dT_before = 0.0, mu_before = 0.0;
+      for (std::size_t k = 0; k < stresses.size(); ++k) {
+        const auto r = solve({.srr = 1.0, .eyring_stress = stresses[k], .nodes = 321});
+        const double mu = std::abs(r.friction_coefficient);
+        table.push_back({{"tau0_MPa", stresses[k] ? nlohmann::json(*stresses[k] * 1e-6) : nlohmann::json("newtonian")},
+                         {"dT_K", r.temperature_rise_max}, {"mu", mu}, {"h_min_m", r.h_min}});
+        if (k > 0 && !(r.temperature_rise_max < dT_before)) ++violations;
+        if (k > 0 && !(mu < mu_before)) ++violations;
+        dT_before = r.temperature_rise_max;
+        mu_before = mu;
+      }
+      return CheckValue{static_cast<double>(violations), 0.0, {{"series", table}}};
+    }});
+
+const std::vector<double> curve_srr{0.02, 0.1, 0.2, 0.4, 0.8, 1.5};
+
+const RegisterCheck traction_peak(CheckSpec{
+    .id = "tehl.eyring.traction_curve_peak", .section = section, .solver = solver,
+    .reference = "the shape of a thermal EHL traction curve (linear, non-linear and thermal regions: Johnson & "
+                 "Tevaarwerk 1977; Evans & Johnson 1986)",
+    .quantity = "violations of: |μ(SRR)| at SRR 0.02, 0.1, 0.2, 0.4, 0.8, 1.5 (τ0 5 MPa, 321 nodes) rises to a "
+                "maximum at an interior point and falls after it",
+    .unit = "-", .tolerance = {0.0, 0},
+    .justification = "a curve without an interior maximum (still rising at SRR 1.5, or falling from the start) "
+                     "or with a second rise counts as failed: the count is of steps against the single-peak shape "
+                     "plus one if the peak sits at an end",
+    .tier = Tier::fast,
+    .run = [](const CheckContext&) {
+      std::vector<double> mu, dT;
+      for (double s : curve_srr) {
+        const auto r = solve({.srr = s, .nodes = 321});
+        mu.push_back(std::abs(r.friction_coefficient));
+        dT.push_back(r.temperature_rise_max);
+      }
+      const auto peak = static_cast<std::size_t>(std::max_element(mu.begin(), mu.end()) - mu.begin());
+      int violations = (peak == 0 || peak + 1 == mu.size()) ? 1 : 0;
+      for (std::size_t k = 1; k < mu.size(); ++k)
+        if (k <= peak ? !(mu[k] > mu[k - 1]) : !(mu[k] < mu[k - 1])) ++violations;
+      return CheckValue{static_cast<double>(violations), 0.0,
+                        {{"srr", curve_srr}, {"mu", mu}, {"dT_K", dT}, {"peak_srr", curve_srr[peak]}}};
+    }});
+
+}  // namespace
+}  // namespace gearbench::verification
