@@ -1,7 +1,8 @@
 // Thermal EHL (issue #4): one sliding contact and seed 001's whole path (A, AB, B, C, D, DE,
 // E) with the default grids (641 nodes, 10 across the film, 14 in each solid), each against
 // the isothermal solution of the same contacts as its baseline (the side-by-side ratio is the
-// price of the temperature field). Target: the whole path under 2 s.
+// price of the temperature field), and the sliding contact with a Ree–Eyring film (issue 26:
+// ≤ 10× its isothermal solve). Target: the whole path under 2 s.
 #include <benchmark/benchmark.h>
 
 #include "ehl/thermal_mesh_path.h"
@@ -35,6 +36,23 @@ void BM_TehlPoint(benchmark::State& state) {
   state.counters["work_units"] = r.work_units;
 }
 BENCHMARK(BM_TehlPoint)->Unit(benchmark::kMillisecond);
+
+/// The same contact with a Ree–Eyring film (τ0 5 MPa, issue 26): against the same baseline.
+void BM_TehlPointEyring(benchmark::State& state) {
+  auto oil = mineral_oil();
+  oil.eyring_stress = 5e6;
+  const lubricant::ThermalRheology rheology(oil, 313.15);
+  ehl::ThermalEhlOptions o;
+  o.film.rheology = lubricant::ShearRheology::eyring;
+  ehl::ThermalEhlResult r;
+  for (auto _ : state) {
+    r = ehl::ThermalLineContact(sliding_contact(), rheology, steel(), o).solve();
+    benchmark::DoNotOptimize(r.h_min);
+  }
+  state.counters["thermal_iterations"] = r.iterations;
+  state.counters["work_units"] = r.work_units;
+}
+BENCHMARK(BM_TehlPointEyring)->Unit(benchmark::kMillisecond);
 
 void BM_TehlPoint_baseline(benchmark::State& state) {
   const lubricant::ThermalRheology rheology(mineral_oil(), 313.15);
