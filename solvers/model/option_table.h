@@ -145,14 +145,16 @@ class OptionTable {
   }
 
   /// A string key with a fixed set of values, each naming a value of the member (an enum,
-  /// a bool, or the string itself).
+  /// a bool, or the string itself). `api_only` are values the C++ API may set and the record
+  /// names, but a case may not (methods kept for a study only): neither read nor in the schema.
   template <class Access, class V>
-  OptionTable& choice(std::string key, Access access, std::vector<std::pair<std::string, V>> names, KeySpec spec) {
+  OptionTable& choice(std::string key, Access access, std::vector<std::pair<std::string, V>> names, KeySpec spec,
+                      std::vector<std::pair<std::string, V>> api_only = {}) {
     KeyInfo info{std::move(key), KeyType::choice, Shape::scalar, std::nullopt, {}, std::move(spec), {}};
     for (const auto& n : names) info.choices.push_back(n.first);
     Entry e{info};
-    e.get = [access, names](const O& o) -> nlohmann::json {
-      for (const auto& [name, value] : names)
+    e.get = [access, all = concat(names, api_only)](const O& o) -> nlohmann::json {
+      for (const auto& [name, value] : all)
         if (std::invoke(access, o) == value) return name;
       return nullptr;
     };
@@ -204,7 +206,7 @@ class OptionTable {
                        const std::function<nlohmann::json(nlohmann::json)>& schema_of = {}) {
     using M = member_t<Access>;
     KeyInfo info{std::move(key), KeyType::section, Shape::scalar, std::nullopt, {}, std::move(spec), {}};
-    info.schema = table.schema(info.spec.description);
+    info.schema = table.schema(info.spec.description, holder_default<S>(access));
     if (schema_of) info.schema = schema_of(std::move(info.schema));
     Entry e{info};
     e.get = [access, &table](const O& o) -> nlohmann::json {
@@ -298,8 +300,10 @@ class OptionTable {
   }
 
   /// The object schema of these keys; defaults from a default-constructed O.
-  [[nodiscard]] nlohmann::json schema(const std::string& description = "") const {
-    const O defaults{};
+  [[nodiscard]] nlohmann::json schema(const std::string& description = "") const { return schema(description, O{}); }
+  /// The same with the defaults `defaults` holds: a section's are those its holder sets (one
+  /// friction section, a different default μ in each model that holds it).
+  [[nodiscard]] nlohmann::json schema(const std::string& description, const O& defaults) const {
     auto obj = nlohmann::json{{"type", "object"}, {"properties", nlohmann::json::object()}};
     auto required = nlohmann::json::array();
     for (const auto& e : entries_) {
@@ -327,6 +331,21 @@ class OptionTable {
   };
   template <class Access>
   using member_t = std::remove_cvref_t<std::invoke_result_t<Access, O&>>;
+
+  /// The section a default-constructed O holds (a default S where it holds none).
+  template <class S, class Access>
+  static S holder_default(Access access) {
+    const O holder{};
+    const auto& m = std::invoke(access, holder);
+    if constexpr (detail::is_optional<member_t<Access>>::value) return m ? *m : S{};
+    else return m;
+  }
+
+  template <class T>
+  static std::vector<T> concat(std::vector<T> a, const std::vector<T>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+  }
 
   template <class F>
   static nlohmann::json value_json(double v, const F& to_case) { return to_case(v); }
