@@ -11,7 +11,30 @@ namespace gearbench::app {
 using nlohmann::json;
 
 namespace {
+
 constexpr const char* draft = "https://json-schema.org/draft/2020-12/schema";
+
+/// One closed schema per value of the kind's variant key, each applied (if/then) where the case
+/// holds that value, the default value's also where the key is absent. The top level names
+/// only "kind" and the variant key: the chosen branch checks every key, once.
+json variant_schema(const KindSpec& kind, const std::vector<json>& common) {
+  const json merged = model::merge_object_schemas(common, kind.summary);
+  const json& key = merged["properties"].at(kind.variant_key);
+  json branches = json::array();
+  for (const auto& variant : kind.schema_variants) {
+    auto parts = common;
+    for (auto& part : variant.parts()) parts.push_back(std::move(part));
+    json when = {{"properties", {{kind.variant_key, {{"const", variant.value}}}}}};
+    if (key.value("default", json()) != variant.value) when["required"] = {kind.variant_key};
+    branches.push_back({{"if", when}, {"then", model::merge_object_schemas(parts)}});
+  }
+  return {{"type", "object"},
+          {"description", kind.summary},
+          {"properties", {{"kind", merged["properties"]["kind"]}, {kind.variant_key, key}}},
+          {"required", {"kind"}},
+          {"allOf", branches}};
+}
+
 }  // namespace
 
 json section_part(const std::string& key, json section_schema, bool required) {
@@ -43,7 +66,8 @@ std::optional<json> kind_schema(const KindSpec& kind) {
                                 {"description", {{"type", "string"}, {"description", "free text about the case"}}}}},
                               {"required", {"kind"}}}};
   for (auto& part : kind.schema_parts()) parts.push_back(std::move(part));
-  json schema = model::merge_object_schemas(parts, kind.summary);
+  json schema = kind.schema_variants.empty() ? model::merge_object_schemas(parts, kind.summary)
+                                             : variant_schema(kind, parts);
   schema["$schema"] = draft;
   schema["title"] = fmt::format("gearbench case, kind {}", kind.name);
   return schema;

@@ -18,6 +18,14 @@ struct KindSpec {
   /// tables its reader reads (case_schema.h); empty for a kind whose keys are still read by
   /// hand, which then has no schema rather than one that could be wrong.
   std::function<std::vector<nlohmann::json>()> schema_parts = {};
+  /// A kind whose other keys depend on one key's value (the dynamics kind's "model"): that
+  /// key (declared in schema_parts) and, per value, the parts its reader then reads.
+  struct SchemaVariant {
+    std::string value;
+    std::function<std::vector<nlohmann::json>()> parts;
+  };
+  std::string variant_key = {};
+  std::vector<SchemaVariant> schema_variants = {};
 };
 
 class KindRegistry {

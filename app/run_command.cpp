@@ -121,6 +121,9 @@ int run_command(const std::string& case_path, const std::string& output_path) {
       result = run_case(case_json);
     }
     write_output(result.dump(2) + "\n", output_path);
+    // How the solve went, in one line (a result's summary(), as Ceres' BriefReport).
+    if (const auto it = result.find("summary"); it != result.end() && it->is_string())
+      std::cerr << "gearbench: " << it->get<std::string>() << std::endl;
   } catch (const ConvergenceError& e) {
     // The diagnostics of an unconverged solve go where output was asked for (a file only:
     // stdout stays empty on failure), then the failure is reported.

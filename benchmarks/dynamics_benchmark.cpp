@@ -115,7 +115,7 @@ struct HerringboneProblem {
 
   [[nodiscard]] dynamics::Herringbone12Options options(const dynamics::IntegratorOptions& i) const {
     dynamics::Herringbone12Options o;
-    o.mesh.friction_coefficient = 0.05;
+    o.mesh.friction.friction_coefficient = 0.05;
     o.mesh_in_impact = true;  // the study's workload: restarts at every pulse (docs, "Integrators")
     o.impact_held_velocity = true;  // the pulses of eq. 6 as printed, as when the study was recorded
     o.runup_cycles = 0;

@@ -1,6 +1,6 @@
 // The solver kinds through the gearbench executable: EHL, transient EHL, oil-film stiffness,
-// dynamics, efficiency and thermal EHL each run on a small case, validate their input (exit 2
-// naming the key) and report non-convergence (exit 3, diagnostics still written).
+// dynamics, efficiency and thermal EHL each run on a small case, validate their
+// input (exit 2 naming the key) and report non-convergence (exit 3, diagnostics still written).
 #include <gtest/gtest.h>
 #include <algorithm>
 
@@ -252,12 +252,53 @@ TEST(Cli, DynamicsRunsAndValidates) {
   EXPECT_NEAR(r["mesh_frequency_Hz"].get<double>(), 332.0, 0.5);
   EXPECT_GT(r["dynamic_factor"].get<double>(), 1.0);
   EXPECT_EQ(r["natural_frequencies_Hz"].size(), 5u);
+  // How the run went: its status and message, the options given and used, and the summary
+  // on stderr.
+  EXPECT_EQ(r["status"], "periodic");
+  EXPECT_EQ(r["message"].get<std::string>().rfind("periodic: successive periods differ by", 0), 0u) << r["message"];
+  EXPECT_EQ(r["options_given"]["runup_cycles"], 4);
+  EXPECT_EQ(r["options_used"]["integrator"]["method"], "rk8pd");
+  EXPECT_NE(o.err.find("gearbench: spur6: 4 + 4 mesh cycles, rk8pd (rtol 1e-07): "), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("; periodic (periodicity "), std::string::npos) << o.err;
+  // A crack makes the run whole revolutions (20 mesh cycles; the record at least two): used, not given.
+  auto cracked = j;
+  cracked["crack"] = {{"type", "pitch"}, {"length_mm", 1.0}, {"angle_deg", 45}};
+  cracked["samples_per_cycle"] = 8;
+  const auto cracked_run = run_gearbench("run " + write_case("dynamics_cracked", cracked.dump()));
+  ASSERT_EQ(cracked_run.exit_code, 0) << cracked_run.err;
+  const auto rc = json::parse(cracked_run.out);
+  EXPECT_EQ(rc["options_given"]["record_cycles"], 4);
+  EXPECT_EQ(rc["options_used"]["runup_cycles"], 20);
+  EXPECT_EQ(rc["options_used"]["record_cycles"], 40);
+  // Run out of integrator steps: not converged, exit 3, naming the key that bounds them.
+  auto starved = j;
+  starved["integrator"] = {{"max_steps", 1}};
+  const auto starved_run = run_gearbench("run " + write_case("dynamics_starved", starved.dump()));
+  EXPECT_EQ(starved_run.exit_code, 3) << starved_run.err;
+  EXPECT_NE(starved_run.err.find("(integrator.max_steps)"), std::string::npos) << starved_run.err;
   const std::pair<std::function<void(json&)>, std::string> bad[] = {
       {[](json& c) { c["model"] = "spur7"; }, "model = \"spur7\": allowed values are spur6, herringbone12"},
       {[](json& c) { c["friction"]["mu"] = 0.9; }, "friction.mu = 0.9: allowed range is [0, 0.5]"},
       {[](json& c) { c.erase("operating"); }, "operating: missing required key"},
       {[](json& c) { c["gear_pair"]["helix_angle_deg"] = 10; }, "gear_pair.helix_angle_deg = 10: model \"spur6\" needs 0"},
       {[](json& c) { c["samples_per_cycle"] = 4; }, "samples_per_cycle = 4: allowed range is [8, 4096]"},
+      // Keys the tables validate that were read unchecked or not at all before (issue 21).
+      {[](json& c) { c["integrator"] = {{"max_steps", 0}}; }, "integrator.max_steps = 0: allowed range is [1, 1000000000]"},
+      {[](json& c) { c["integrator"] = {{"atol", 1}}; }, "integrator.atol = 1: allowed range is [1e-20, 0.01]"},
+      {[](json& c) { c["integrator"] = {{"rtol", 0.1}}; }, "integrator.rtol = 0.1: allowed range is [1e-14, 0.01]"},
+      {[](json& c) { c["integrator"] = {{"method", "verner"}}; }, "integrator.method = \"verner\": allowed values are rk8pd"},
+      {[](json& c) { c["bearings"]["stiffness_N_per_m"] = 0; }, "bearings.stiffness_N_per_m = 0: allowed range is (0, 1e+16] N/m"},
+      {[](json& c) { c["bearings"]["damping_N_s_per_m"] = -1; }, "bearings.damping_N_s_per_m = -1: allowed range is [0, 1000000000] N*s/m"},
+      {[](json& c) { c["mesh_damping_ratio"] = 1.5; }, "mesh_damping_ratio = 1.5: allowed range is [0, 1]"},
+      {[](json& c) { c["runup_cycles"] = -1; }, "runup_cycles = -1: allowed range is [0, 1000000]"},
+      {[](json& c) { c["record_cycles"] = 1; }, "record_cycles = 1: allowed range is [2, 1000000]"},
+      {[](json& c) { c["crack"] = {{"type", "pitch"}, {"length_mm", 1}, {"angle_deg", 45}, {"gear", 2}}; },
+       "crack.gear = 2: allowed range is [1, 1]"},
+      {[](json& c) { c["fillet"] = "round"; }, "fillet = \"round\": allowed values are trochoid, circular_arc"},
+      {[](json& c) { c["speed_sweep_rpm"] = {{"from", 500}, {"to", 1000}, {"points", 1}}; },
+       "speed_sweep_rpm.points = 1: allowed range is [2, 10000]"},
+      {[](json& c) { c["dynamic_efficiency"] = {{"phases", 2}}; }, "dynamic_efficiency.phases = 2: allowed range is [4, 100000]"},
+      {[](json& c) { c["mesh_in_impact"] = true; }, "mesh_in_impact: unknown key"},  // a herringbone12 key
   };
   int n = 0;
   for (const auto& [edit, expected] : bad) {
@@ -327,6 +368,11 @@ TEST(Cli, HerringboneDynamicsRunsSweepsAndValidates) {
   EXPECT_EQ(r["natural_frequencies_Hz"].size(), 11u);  // 12 DOF, one rigid rotation
   EXPECT_EQ(r["speed_sweep"]["dynamic_factor"].size(), 2u);
   EXPECT_NE(o.err.find("speed sweep 2/2"), std::string::npos) << o.err;  // progress on stderr
+  EXPECT_NE(o.err.find("gearbench: herringbone12: 2 + 2 mesh cycles"), std::string::npos) << o.err;
+  // The groove coupling the case leaves to its default is recorded as used.
+  EXPECT_FALSE(r["options_given"]["groove_coupling"].contains("axial_stiffness_N_per_m"));
+  EXPECT_EQ(r["options_used"]["groove_coupling"]["axial_stiffness_N_per_m"],
+            r["parameters"]["groove_axial_stiffness_N_per_m"]);
   auto impact_notes = [](const json& notes) {
     return std::count_if(notes.begin(), notes.end(), [](const json& n) {
       return n.get<std::string>().find("compression_ratio") != std::string::npos;
@@ -365,6 +411,12 @@ TEST(Cli, HerringboneDynamicsRunsSweepsAndValidates) {
       {[](json& c) { c["groove_coupling"]["axial_stiffness_N_per_m"] = -1; }, "groove_coupling.axial_stiffness_N_per_m"},
       {[](json& c) { c["mesh"]["harmonics"] = 60; }, "mesh.harmonics = 60"},
       {[](json& c) { c["speed_sweep_rpm"]["to"] = 500; }, "speed_sweep_rpm.to = 500"},
+      {[](json& c) { c["mesh"]["positions"] = 8; }, "mesh.positions = 8: allowed range is [16, 100000]"},
+      {[](json& c) { c["bearings"]["axial_stiffness_N_per_m"] = 0; }, "bearings.axial_stiffness_N_per_m = 0"},
+      {[](json& c) { c["half_offset_cycles"] = 2; }, "half_offset_cycles = 2: allowed range is [0, 1]"},
+      {[](json& c) { c["integrator"] = {{"max_steps", 0}}; }, "integrator.max_steps = 0"},
+      {[](json& c) { c["crack"] = {{"type", "pitch"}, {"length_mm", 1}, {"angle_deg", 45}}; },
+       "crack: unknown key"},  // a spur6 key
   };
   int n = 0;
   for (const auto& [edit, expected] : bad) {

@@ -40,12 +40,10 @@ const model::Lubricant oil{0.044, 22e-9, {}, {}, {}, {}, {}, {}};
 // = 29.6626, a factor 1.00009 in the logarithm's argument, i.e. 5e-7 in μ.
 TEST(DynamicsFriction, ReferenceBenedictKelleyMatchesTheProductionLaw) {
   const geometry::GearPairGeometry g(testing_support::seed003_pair());
-  dynamics::FrictionLawOptions law;
-  law.model = lubricant::FrictionModel::benedict_kelley;
-  law.lubricant = oil;
-  const dynamics::PairFriction production(g, steel, seed003_operating, 0.06, law);
   dynamics::Spur6Options o;
-  o.friction_law = law;
+  o.friction.friction_model = lubricant::FrictionModel::benedict_kelley;
+  o.friction.lubricant = oil;
+  const dynamics::PairFriction production(g, steel, seed003_operating, o.friction);
   const dynamics::Spur6Dynamics d(g, steel, seed003_operating, o);
   auto p = spur6_reference(d);
   p.benedict_kelley = reference::Spur6Parameters::BenedictKelley{oil.viscosity, 0.4e-6, g.pair().face_width};
@@ -72,9 +70,9 @@ TEST(DynamicsFriction, IsoIsTheMeanCoefficientAndMixedLiesBetweenItsLaws) {
   const geometry::GearPairGeometry g(testing_support::seed003_pair());
   auto with = [&](lubricant::FrictionModel model) {
     dynamics::FrictionLawOptions law;
-    law.model = model;
+    law.friction_model = model;
     law.lubricant = oil;
-    return dynamics::PairFriction(g, steel, seed003_operating, 0.06, law);
+    return dynamics::PairFriction(g, steel, seed003_operating, law);
   };
   efficiency::MeshLossOptions iso_options;
   iso_options.friction_model = lubricant::FrictionModel::iso14179;
@@ -111,8 +109,8 @@ TEST(DynamicsFriction, HelicalArmsInterpolateBetweenLoadLevels) {
   dynamics::HalfMeshOptions o;
   o.slices = 40;
   o.positions = 180;
-  o.friction_law.model = lubricant::FrictionModel::xu_kahraman;
-  o.friction_law.lubricant = oil;
+  o.friction.friction_model = lubricant::FrictionModel::xu_kahraman;
+  o.friction.lubricant = oil;
   model::OperatingPoint operating{2000.0 * std::numbers::pi / 30.0, 309.09, 313.15, {0.4e-6, 0.4e-6}};
   const double nominal = operating.pinion_torque / 2.0 / (g.radii(0).base * std::cos(g.base_helix_angle()));
   const dynamics::HalfMesh coarse(g, s0, operating, o);
@@ -213,22 +211,26 @@ TEST(DynamicsIntegrator, Rk8pdPassesOnTheRightHandSidesException) {
 }
 
 TEST(DynamicsIntegrator, MethodKeysAreTheOfferedOnesAndABadKeyNamesTheAllowedOnes) {
-  EXPECT_EQ(dynamics::integrator_method("dormand_prince"), dynamics::IntegratorMethod::dormand_prince);
-  EXPECT_EQ(dynamics::integrator_method("adams"), dynamics::IntegratorMethod::adams);
-  EXPECT_EQ(dynamics::integrator_method("rk8pd"), dynamics::IntegratorMethod::rk8pd);
+  const auto read = [](const char* method) {
+    const nlohmann::json section = {{"method", method}};
+    model::ObjectReader r(section, "integrator");
+    dynamics::IntegratorOptions o;
+    dynamics::IntegratorOptions::table().read(r, o);
+    return o.method;
+  };
+  EXPECT_EQ(read("dormand_prince"), dynamics::IntegratorMethod::dormand_prince);
+  EXPECT_EQ(read("adams"), dynamics::IntegratorMethod::adams);
+  EXPECT_EQ(read("rk8pd"), dynamics::IntegratorMethod::rk8pd);
   EXPECT_EQ(dynamics::IntegratorOptions{}.method, dynamics::IntegratorMethod::rk8pd);
   for (const char* refused : {"rk45", "verner", "fehlberg"}) {
-    try {
-      (void)dynamics::integrator_method(refused);
-      FAIL() << refused;
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find("integrator.method"), std::string::npos);
-      EXPECT_NE(std::string(e.what()).find("dormand_prince"), std::string::npos);
-    }
+    const auto message = testing_support::input_error_of([&] { (void)read(refused); });
+    EXPECT_NE(message.find("integrator.method"), std::string::npos) << message;
+    EXPECT_NE(message.find("dormand_prince"), std::string::npos) << message;
   }
   dynamics::IntegratorOptions o;
   o.relative_tolerance = 0.5;
-  EXPECT_THROW(o.validate(), InputError);
+  EXPECT_EQ(testing_support::input_error_of([&] { o.validate(); }),
+            "integrator.rtol = 0.5: allowed range is [1e-14, 0.01]");
 }
 
 // The compiled kernels must be SUNDIALS' own operations, including a result that aliases

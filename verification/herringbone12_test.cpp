@@ -39,7 +39,7 @@ dynamics::Herringbone12Options fast_options() {
   dynamics::Herringbone12Options o;
   o.mesh.slices = 40;
   o.mesh.positions = 180;
-  o.mesh.friction_coefficient = 0.05;
+  o.mesh.friction.friction_coefficient = 0.05;
   return o;
 }
 
@@ -61,7 +61,7 @@ TEST(Herringbone12, RejectsBadInputNamingTheKey) {
             std::string::npos);
   EXPECT_NE(error(herringbone, [](auto& o) { o.radial_stiffness = 0.0; }).find("bearings.radial_stiffness_N_per_m"),
             std::string::npos);
-  EXPECT_NE(error(herringbone, [](auto& o) { o.mesh.friction_coefficient = 0.9; }).find("friction.mu = 0.9"),
+  EXPECT_NE(error(herringbone, [](auto& o) { o.mesh.friction.friction_coefficient = 0.9; }).find("friction.mu = 0.9"),
             std::string::npos);
   // A helical pair that is not a herringbone pair.
   const geometry::GearPairGeometry single(seed000_pair().one_mesh());

@@ -2,8 +2,12 @@
 // the reader does; a value read at a bound passes; what a table records reads back the same.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "dynamics/herringbone12_dynamics.h"
+#include "dynamics/speed_sweep.h"
+#include "dynamics/spur6_dynamics.h"
 #include "efficiency/efficiency_sweep.h"
 #include "efficiency/mesh_loss.h"
 #include "micropitting/iso15144_case.h"
@@ -42,6 +46,67 @@ TEST(OptionTable, ValidateNamesKeyValueAndRange) {
   EXPECT_EQ(input_error_of([&] { s.validate(); }), "sweep.torque_Nm[1] = -1: allowed range is (0, 1000000000] N*m");
   EXPECT_EQ(input_error_of([] { efficiency::SweepSpec{}.validate(); }),
             "sweep: give at least one of torque_Nm, speed_rpm, pressure_angle_deg");
+}
+
+// The dynamics models' options (issue 21): what was validated only when the integrator was
+// built, after the mesh tables (tolerances, steps), or not at all (the sweep's points), is now
+// refused by validate() up front, naming the key, the value and the range.
+TEST(OptionTable, DynamicsValidateNamesKeyValueAndRange) {
+  const auto spur6 = [](auto edit) {
+    dynamics::Spur6Options o;
+    edit(o);
+    return input_error_of([&] { o.validate(); });
+  };
+  EXPECT_EQ(spur6([](auto& o) { o.integrator.max_steps = 0; }),
+            "integrator.max_steps = 0: allowed range is [1, 1000000000]");
+  EXPECT_EQ(spur6([](auto& o) { o.integrator.absolute_tolerance = 1.0; }),
+            "integrator.atol = 1: allowed range is [1e-20, 0.01]");
+  EXPECT_EQ(spur6([](auto& o) { o.integrator.relative_tolerance = 1e-15; }),
+            "integrator.rtol = 1e-15: allowed range is [1e-14, 0.01]");
+  EXPECT_EQ(spur6([](auto& o) { o.bearing_stiffness = 0.0; }),
+            "bearings.stiffness_N_per_m = 0: allowed range is (0, 1e+16] N/m");
+  EXPECT_EQ(spur6([](auto& o) { o.crack = stiffness::GearCrack{{stiffness::Crack::Type::pitch, 1e-3, 0.5}, 1}; }),
+            "crack.gear = 2: allowed range is [1, 1]");
+  EXPECT_EQ(spur6([](auto& o) { o.friction.boundary_friction = 0.2; }),
+            "friction.mu_boundary = 0.2: allowed range is [0.07, 0.15]");
+  EXPECT_EQ(spur6([](auto& o) { o.friction.friction_model = lubricant::FrictionModel::mixed; }),
+            "lubricant: missing, needed for friction.model = mixed");
+  dynamics::Herringbone12Options h;
+  h.groove_stiffness = -1.0;
+  EXPECT_EQ(input_error_of([&] { h.validate(); }),
+            "groove_coupling.axial_stiffness_N_per_m = -1: allowed range is [0, 1e+16] N/m");
+  h = {};
+  h.mesh.positions = 90;
+  h.mesh.harmonics = 45;  // a table of 90 points holds 44 harmonics
+  EXPECT_EQ(input_error_of([&] { h.validate(); }), "mesh.harmonics = 45: allowed range is [1, mesh.positions/2) = [1, 45)");
+  EXPECT_EQ(input_error_of([] { dynamics::SpeedSweepSpec{1000.0, 2000.0, 1}.validate(); }),
+            "speed_sweep_rpm.points = 1: allowed range is [2, 10000]");
+  EXPECT_EQ(input_error_of([] { dynamics::SpeedSweepSpec{1000.0, 500.0, 3}.validate(); }),
+            "speed_sweep_rpm.to = 500: must be above speed_sweep_rpm.from = 1000");
+}
+
+// One friction section, a default μ per model that holds it: the schema shows each model's.
+TEST(OptionTable, ASectionsSchemaDefaultsAreItsHolders) {
+  const auto mu = [](const json& schema) { return schema["properties"]["friction"]["properties"]["mu"]["default"]; };
+  EXPECT_EQ(mu(dynamics::Spur6Options::table().schema()), 0.06);
+  EXPECT_EQ(mu(dynamics::Herringbone12Options::table().schema()), 0.0);
+  EXPECT_EQ(mu(efficiency::MeshLossOptions::table().schema()), 0.05);
+}
+
+// The work-precision study's methods (Verner, Fehlberg) may be set through the C++ API and
+// are recorded, but a case may not name them, and the schema does not offer them.
+TEST(OptionTable, StudyOnlyMethodsAreValidButNotReadNorOffered) {
+  const auto& t = dynamics::IntegratorOptions::table();
+  dynamics::IntegratorOptions o;
+  o.method = dynamics::IntegratorMethod::verner;
+  EXPECT_NO_THROW(o.validate());
+  EXPECT_EQ(t.to_json(o)["method"], "verner");
+  const auto offered = t.schema()["properties"]["method"]["enum"];
+  EXPECT_EQ(std::count(offered.begin(), offered.end(), "verner"), 0);
+  EXPECT_EQ(std::count(offered.begin(), offered.end(), "rk8pd"), 1);
+  const json section = {{"method", "verner"}};
+  model::ObjectReader r(section, "integrator");
+  EXPECT_NE(input_error_of([&] { t.read(r, o); }).find("integrator.method = \"verner\""), std::string::npos);
 }
 
 // The reader converts a case value to SI (× scale + offset); validate() converts the bounds the

@@ -121,9 +121,12 @@ std::vector<SchemaCase> cases_with_schema() {
 
 TEST(Schema, EveryKeyOfEveryCaseIsInItsKindsSchema) {
   const auto cases = cases_with_schema();
-  // The four kinds with tables have 13 case files among them today; fewer means the test
+  // The five kinds with tables have 17 case files among them today; fewer means the test
   // checks less than it claims (a kind lost its schema, or the cases moved).
-  EXPECT_GE(cases.size(), 13u);
+  EXPECT_GE(cases.size(), 17u);
+  for (const char* kind : {"dynamics"})
+    EXPECT_TRUE(std::any_of(cases.begin(), cases.end(), [&](const SchemaCase& c) { return c.value["kind"] == kind; }))
+        << kind;
   for (const auto& c : cases)
     for (const auto& e : SchemaCheck(c.schema).errors(c.value)) ADD_FAILURE() << c.path << ": " << e;
 }
@@ -164,11 +167,50 @@ TEST(Schema, DefaultsAreTheOnesTheSolverGets) {
   EXPECT_EQ(result["options_used"]["slices"], 1);
 }
 
+// The dynamics kind's keys depend on "model": each model's branch holds its own keys (an
+// absent "model" is spur6), so a key of the other model is refused as unknown.
+TEST(Schema, DynamicsChoosesTheModelsKeys) {
+  const SchemaCheck check(json::parse(run_gearbench("schema dynamics").out));
+  auto spur = read_case(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics.json");
+  auto herringbone = read_case(GEARBENCH_SOURCE_DIR "/cases/seed000_herringbone_dynamics.json");
+  ASSERT_TRUE(check.errors(spur).empty());
+  ASSERT_TRUE(check.errors(herringbone).empty());
+  spur["mesh_in_impact"] = true;
+  EXPECT_EQ(check.errors(spur), std::vector<std::string>{"case.mesh_in_impact: unknown key"});
+  spur.erase("mesh_in_impact");
+  spur.erase("model");  // spur6 is the default
+  spur["crack"] = {{"type", "pitch"}, {"length_mm", 1.0}, {"angle_deg", 45}, {"gear", 2}};
+  EXPECT_EQ(check.errors(spur), std::vector<std::string>{"case.crack.gear = 2.0: out of bounds"});
+  herringbone.erase("model");  // read as spur6: the herringbone's own keys are unknown there
+  EXPECT_FALSE(check.errors(herringbone).empty());
+  herringbone["model"] = "herringbone12";
+  herringbone["integrator"] = {{"method", "verner"}};  // a study-only method is not offered
+  EXPECT_EQ(check.errors(herringbone), std::vector<std::string>{"case.integrator.method = \"verner\": not in enum"});
+}
+
+// A default in the dynamics schema is the one the solver gets, read back from the
+// options_given of a short run of the spur6 seed case without its friction section.
+TEST(Schema, DynamicsDefaultsAreTheOnesTheSolverGets) {
+  const auto schema = json::parse(run_gearbench("schema dynamics").out);
+  const auto& spur6 = schema["allOf"][0]["then"]["properties"];
+  auto c = read_case(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics.json");
+  c["runup_cycles"] = 2;
+  c["record_cycles"] = 2;
+  c.erase("friction");
+  const auto o = run_gearbench("run " + gearbench::testing_support::write_case("schema_spur6_defaults", c.dump()));
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto given = json::parse(o.out)["options_given"];
+  EXPECT_EQ(given["friction"]["mu"], spur6["friction"]["properties"]["mu"]["default"]);
+  for (const char* key : {"method", "rtol", "atol", "max_steps"})
+    EXPECT_EQ(given["integrator"][key], spur6["integrator"]["properties"][key]["default"]) << key;
+  EXPECT_EQ(given["samples_per_cycle"], spur6["samples_per_cycle"]["default"]);
+}
+
 TEST(Schema, AKindWithoutATableSaysItHasNoSchema) {
-  const auto o = run_gearbench("schema dynamics");
+  const auto o = run_gearbench("schema ehl_line");
   EXPECT_EQ(o.exit_code, 2);
   EXPECT_TRUE(o.out.empty());
-  EXPECT_NE(o.err.find("error: kind dynamics: has no schema yet"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("error: kind ehl_line: has no schema yet"), std::string::npos) << o.err;
   EXPECT_EQ(run_gearbench("schema no_such_kind").exit_code, 2);
 }
 
@@ -176,14 +218,18 @@ TEST(Schema, AllKindsSchemaChoosesEachKindsOwn) {
   const auto o = run_gearbench("schema");
   ASSERT_EQ(o.exit_code, 0) << o.err;
   const auto all = json::parse(o.out);
-  for (const char* kind : {"stiffness", "efficiency", "micropitting_iso", "geometry"})
+  for (const char* kind : {"stiffness", "efficiency", "micropitting_iso", "geometry", "dynamics"})
     EXPECT_TRUE(all["$defs"].contains(kind)) << kind;
-  EXPECT_NE(all["$comment"].get<std::string>().find("dynamics"), std::string::npos);
+  EXPECT_NE(all["$comment"].get<std::string>().find("ehl_line"), std::string::npos);
   const SchemaCheck check(all);
   auto geometry = read_case(GEARBENCH_SOURCE_DIR "/cases/seed004_spur_geometry.json");
   EXPECT_TRUE(check.errors(geometry).empty());
   geometry["gear_pair"]["not_a_key"] = 1;  // the geometry kind's own schema is the one applied
   EXPECT_EQ(check.errors(geometry), std::vector<std::string>{"case.gear_pair.not_a_key: unknown key"});
+  auto herringbone = read_case(GEARBENCH_SOURCE_DIR "/cases/seed000_herringbone_dynamics.json");
+  EXPECT_TRUE(check.errors(herringbone).empty());
+  herringbone["mesh"]["not_a_key"] = 1;  // through $ref and the model's branch
+  EXPECT_EQ(check.errors(herringbone), std::vector<std::string>{"case.mesh.not_a_key: unknown key"});
 }
 
 }  // namespace

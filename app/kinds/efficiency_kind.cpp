@@ -11,7 +11,6 @@
 #include "closed_form/efficiency_closed_form.h"
 #include "efficiency/efficiency_sweep.h"
 #include "efficiency/mesh_loss.h"
-#include "efficiency_sections.h"
 #include "case_schema.h"
 #include "kind_registry.h"
 #include "model/case_reader.h"
@@ -67,7 +66,8 @@ json run_efficiency(const json& case_json) {
   root.optional_string("description");
   const auto gear_case = model::read_gear_case(root);
   if (!gear_case.operating) throw InputError("operating: missing required key (kind efficiency)");
-  const auto options = read_mesh_loss_options(root);
+  efficiency::MeshLossOptions options;
+  efficiency::MeshLossOptions::table().read(root, options);
   const auto sweep = read_sweep(root);
   root.finish();
 

@@ -62,15 +62,8 @@ void FourierSeries::evaluate(double t, std::span<const FourierSeries* const> ser
 // ---- HalfMesh ---------------------------------------------------------------------------
 
 void HalfMeshOptions::validate() const {
-  if (slices < 1 || slices > 10000)
-    throw InputError(fmt::format("mesh.slices = {}: allowed range is [1, 10000]", slices));
-  if (positions < 16 || positions > 100000)
-    throw InputError(fmt::format("mesh.positions = {}: allowed range is [16, 100000]", positions));
-  if (harmonics < 1 || 2 * harmonics >= positions)
-    throw InputError(fmt::format("mesh.harmonics = {}: allowed range is [1, mesh.positions/2) = [1, {})", harmonics,
-                                 (positions + 1) / 2));
-  if (!(friction_coefficient >= 0.0 && friction_coefficient <= 0.5))
-    throw InputError(fmt::format("friction.mu = {}: allowed range is [0, 0.5]", friction_coefficient));
+  table().validate(*this, "mesh.");
+  friction.validate();
 }
 
 namespace {
@@ -82,13 +75,13 @@ HalfMesh::HalfMesh(const geometry::GearPairGeometry& geometry, const std::array<
     : geometry_(geometry),
       options_((options.validate(), options)),
       spur_(geometry, materials, operating.pinion_speed, options_.fillet),
-      friction_(geometry, materials, operating, options_.friction_coefficient, options_.friction_law) {
+      friction_(geometry, materials, operating, options_.friction) {
   period_ = spur_.period();
   const double halves = geometry_.pair().herringbone ? 2.0 : 1.0;
   nominal_force_ = operating.pinion_torque / halves / (geometry_.radii(0).base * std::cos(geometry_.base_helix_angle()));
   if (load_dependent_friction() && !(nominal_force_ > 0.0))
     throw InputError(fmt::format("operating.pinion_torque_Nm = {}: friction.model = {} needs a load > 0",
-                                 operating.pinion_torque, lubricant::friction_model_name(options_.friction_law.model)));
+                                 operating.pinion_torque, lubricant::friction_model_name(options_.friction.friction_model)));
   if (geometry_.base_helix_angle() > 0.0) {
     build_tables(materials);
   } else {

@@ -62,9 +62,12 @@ struct HalfMeshOptions {
   int slices = 100;     ///< face-width slices of a helical half
   int positions = SpurMesh::mean_positions;  ///< table points over one mesh cycle (helical)
   int harmonics = 24;   ///< mesh harmonics kept of the tables (helical); the slicing's steps lie far above
-  double friction_coefficient = 0.0;  ///< μ of the constant law
-  FrictionLawOptions friction_law;    ///< a law of solvers/lubricant instead
+  FrictionLawOptions friction;  ///< μ = 0 unless the case gives one
   stiffness::Fillet fillet = stiffness::Fillet::trochoid;  ///< of the energy-method tooth (mesh stiffness)
+
+  /// The "mesh" section's keys: slices, positions, harmonics (friction and fillet are root keys
+  /// of a case, in Herringbone12Options' table).
+  static const model::OptionTable<HalfMeshOptions>& table();
   void validate() const;  ///< InputError naming the key
 };
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
+#include <utility>
 
 #include "model/errors.h"
 
@@ -54,34 +55,7 @@ Vector12 mesh_direction(const Herringbone12Parameters& p, int h) {
   return v;
 }
 
-void check_range(double v, double lo, double hi, const char* key) {
-  if (!(v >= lo && v <= hi)) throw InputError(fmt::format("{} = {}: allowed range is [{}, {}]", key, v, lo, hi));
-}
 }  // namespace
-
-void Herringbone12Options::validate() const {
-  check_range(radial_stiffness, 1.0, 1e15, "bearings.radial_stiffness_N_per_m");
-  check_range(radial_damping, 0.0, 1e9, "bearings.radial_damping_N_s_per_m");
-  check_range(axial_stiffness, 1.0, 1e15, "bearings.axial_stiffness_N_per_m");
-  check_range(axial_damping, 0.0, 1e9, "bearings.axial_damping_N_s_per_m");
-  if (groove_stiffness) check_range(*groove_stiffness, 0.0, 1e15, "groove_coupling.axial_stiffness_N_per_m");
-  check_range(groove_damping, 0.0, 1e9, "groove_coupling.axial_damping_N_s_per_m");
-  if (twist_stiffness) check_range(*twist_stiffness, 0.0, 1e15, "groove_coupling.torsional_stiffness_N_m_per_rad");
-  check_range(twist_damping, 0.0, 1e9, "groove_coupling.torsional_damping_N_m_s_per_rad");
-  check_range(mesh_damping_ratio, 0.0, 1.0, "mesh_damping_ratio");
-  check_range(half_offset, 0.0, 1.0, "half_offset_cycles");
-  if (!(base_pitch_error >= 0.0 && base_pitch_error <= 1e-4))
-    throw InputError(fmt::format("base_pitch_error_um = {}: allowed range is [0, 100]", base_pitch_error * 1e6));
-  if (backlash && !(*backlash > 0.0 && *backlash <= 1e-2))
-    throw InputError(fmt::format("backlash_um = {}: allowed range is (0, 10000]", *backlash * 1e6));
-  mesh.validate();
-  if (runup_cycles < 0 || runup_cycles > 1000000)
-    throw InputError(fmt::format("runup_cycles = {}: allowed range is [0, 1000000]", runup_cycles));
-  if (record_cycles < 2 || record_cycles > 1000000)
-    throw InputError(fmt::format("record_cycles = {}: allowed range is [2, 1000000]", record_cycles));
-  if (samples_per_cycle < 8 || samples_per_cycle > 4096)
-    throw InputError(fmt::format("samples_per_cycle = {}: allowed range is [8, 4096]", samples_per_cycle));
-}
 
 Herringbone12Dynamics::Herringbone12Dynamics(const geometry::GearPairGeometry& geometry,
                                              const std::array<model::Material, 2>& materials,
@@ -391,6 +365,9 @@ Herringbone12Result Herringbone12Dynamics::solve() const {
   plan.samples = static_cast<std::size_t>(options_.record_cycles * options_.samples_per_cycle) + 1;
   plan.longest_call = T;
   Herringbone12Result r;
+  r.options_given = r.options_used = options_;
+  r.options_used.groove_stiffness = p_.k_groove;
+  r.options_used.twist_stiffness = p_.k_twist;
   r.static_mesh_force = p_.static_force;
   r.mesh_frequency = 1.0 / T;
   r.load_torque = 2.0 * p_.T_g;
@@ -438,8 +415,13 @@ Herringbone12Result Herringbone12Dynamics::solve() const {
   amplitude_spectrum(te, plan.sample_interval, r.spectrum_frequency, r.spectrum_te);
   r.natural_frequencies = natural_frequencies(&r.mode_shapes);
   r.periodicity = periodicity(te, static_cast<std::size_t>(options_.samples_per_cycle));
+  auto [status, message] = run_status(r.periodicity);
+  r.status = status;
+  r.message = std::move(message);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
+
+std::string Herringbone12Result::summary() const { return run_summary("herringbone12", *this); }
 
 }  // namespace gearbench::dynamics

@@ -17,6 +17,7 @@
 #include "half_mesh.h"
 #include "model/materials.h"
 #include "response_analysis.h"
+#include "run_status.h"
 
 namespace gearbench::dynamics {
 
@@ -47,7 +48,9 @@ struct Herringbone12Options {
   int samples_per_cycle = 64;
   IntegratorOptions integrator;
 
-  void validate() const;  ///< InputError naming the key
+  /// The keys of a case of model "herringbone12" (dynamics_options.cpp).
+  static const model::OptionTable<Herringbone12Options>& table();
+  void validate() const { table().validate(*this); }  ///< InputError naming the key
 };
 
 /// The model's parameters (per half where the page says so), exposed for the references.
@@ -97,6 +100,14 @@ struct Herringbone12Result {
   EnergyBalance energy;
   long steps = 0, rhs_evaluations = 0;
   double seconds = 0.0;
+  RunStatus status = RunStatus::periodic;  ///< from the periodicity (run_status)
+  std::string message;                     ///< what the status means for the figures
+  /// The options as given and as the run used them: the groove coupling's stiffnesses filled
+  /// in where the case gave none.
+  Herringbone12Options options_given, options_used;
+
+  /// One line: run length, integrator, work, time, status, dynamic factor.
+  [[nodiscard]] std::string summary() const;
 };
 
 class Herringbone12Dynamics final : public DynamicsModel {

@@ -1,4 +1,4 @@
-// The integrator methods' table, the options' validation, and the one factory: GSL odeiv2
+// The integrator methods' table, the options' table, and the one factory: GSL odeiv2
 // (gsl_integrator.cpp) for rk8pd, SUNDIALS (sundials_integrator.cpp) for the others.
 #include <fmt/format.h>
 
@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "integrator.h"
 #include "model/errors.h"
@@ -34,22 +35,37 @@ const char* integrator_key(IntegratorMethod method) {
   throw std::logic_error("integrator_key: unknown method");
 }
 
-IntegratorMethod integrator_method(const std::string& key) {
-  std::string allowed;
+namespace {
+
+model::OptionTable<IntegratorOptions> make_table() {
+  model::OptionTable<IntegratorOptions> t;
+  std::vector<std::pair<std::string, IntegratorMethod>> offered, study_only;
+  std::string texts;
   for (const auto& m : method_names) {
-    if (!m.offered) continue;
-    if (key == m.key) return m.method;
-    allowed += fmt::format("{}\"{}\"", allowed.empty() ? "" : ", ", m.key);
+    (m.offered ? offered : study_only).emplace_back(m.key, m.method);
+    if (m.offered) texts += fmt::format("{}{} ({})", texts.empty() ? "" : "; ", m.key, m.description);
   }
-  throw InputError(fmt::format("integrator.method = \"{}\": allowed values are {}", key, allowed));
+  t.choice("method", &IntegratorOptions::method, offered,
+           {.description = "time integrator (docs/dynamics-model.md, \"Integrators: work-precision\"): " + texts},
+           study_only);
+  // Below 1e-14 a tolerance asks for more than double precision resolves in a state of
+  // rotations and micrometre deflections; above 1e-2 the response is not worth recording.
+  t.number("rtol", &IntegratorOptions::relative_tolerance, model::Range::closed(1e-14, 1e-2),
+           {.description = "relative tolerance of the local error"});
+  t.number("atol", &IntegratorOptions::absolute_tolerance, model::Range::closed(1e-20, 1e-2),
+           {.description = "absolute tolerance of the local error, alike for every state component (m, rad, m/s, "
+                           "rad/s, J)"});
+  t.integer("max_steps", &IntegratorOptions::max_steps, 1, 1000000000,
+            {.description = "steps allowed between two output times (a sample, a restart or a break); more end the "
+                            "run as not converged (exit 3)"});
+  return t;
 }
 
-void IntegratorOptions::validate() const {
-  if (!(relative_tolerance >= 1e-14 && relative_tolerance <= 1e-2))
-    throw InputError(fmt::format("integrator.rtol = {}: allowed range is [1e-14, 0.01]", relative_tolerance));
-  if (!(absolute_tolerance >= 1e-20 && absolute_tolerance <= 1e-2))
-    throw InputError(fmt::format("integrator.atol = {}: allowed range is [1e-20, 0.01]", absolute_tolerance));
-  if (max_steps < 1) throw InputError(fmt::format("integrator.max_steps = {}: must be >= 1", max_steps));
+}  // namespace
+
+const model::OptionTable<IntegratorOptions>& IntegratorOptions::table() {
+  static const auto t = make_table();
+  return t;
 }
 
 const std::vector<double>& Integrator::advance_across_roots(double t_out, double stop, double tolerance,

@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "model/option_table.h"
+
 namespace gearbench::dynamics {
 
 enum class IntegratorMethod {
@@ -43,8 +45,6 @@ struct IntegratorMethodName {
 /// Every method of the work–precision study, in the order of the docs.
 std::span<const IntegratorMethodName> integrator_methods();
 [[nodiscard]] const char* integrator_key(IntegratorMethod method);
-/// The method of an offered key; InputError naming `integrator.method` and the allowed keys otherwise.
-[[nodiscard]] IntegratorMethod integrator_method(const std::string& key);
 
 struct IntegratorOptions {
   /// GSL rk8pd at rtol 1e-7: the fastest offered method at the checks' accuracy, 1e-6 of
@@ -54,9 +54,11 @@ struct IntegratorOptions {
   double relative_tolerance = 1e-7;
   /// [m, rad, m/s, rad/s, J alike]: 1e-6·rtol, as the deflections are micrometres.
   double absolute_tolerance = 1e-13;
-  long max_steps = 100000;  ///< between two output times
+  int max_steps = 100000;  ///< between two output times
 
-  void validate() const;  ///< InputError naming the key
+  /// The "integrator" section's keys: "method" (the offered ones), "rtol", "atol", "max_steps".
+  static const model::OptionTable<IntegratorOptions>& table();
+  void validate() const { table().validate(*this, "integrator."); }  ///< InputError naming the key
 };
 
 class Integrator {

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "efficiency/film_thickness.h"
+#include "efficiency/friction_keys.h"
 #include "efficiency/mesh_loss.h"
 #include "model/errors.h"
 
@@ -11,32 +12,41 @@ namespace gearbench::dynamics {
 
 using lubricant::FrictionModel;
 
-void FrictionLawOptions::validate() const {
-  const auto name = lubricant::friction_model_name(model);
-  if (model == FrictionModel::ehl)
-    throw InputError("friction.model = \"ehl\": no closed-form coefficient for the dynamics models; allowed are "
-                     "\"constant\", \"xu_kahraman\", \"benedict_kelley\", \"iso14179\", \"mixed\"");
-  if (model != FrictionModel::constant && !lubricant)
-    throw InputError(fmt::format("lubricant: missing, needed for friction.model = {}", name));
-  if (!(boundary_mu >= 0.07 && boundary_mu <= 0.15))
-    throw InputError(fmt::format("friction.mu_boundary = {}: allowed range is [0.07, 0.15]", boundary_mu));
-  if (!(lubricant_factor > 0.0 && lubricant_factor <= 2.0))
-    throw InputError(fmt::format("friction.lubricant_factor = {}: allowed range is (0, 2]", lubricant_factor));
+namespace {
+
+model::OptionTable<FrictionLawOptions> make_table() {
+  model::OptionTable<FrictionLawOptions> t;
+  // The "ehl" law has no closed-form coefficient to evaluate at every step.
+  efficiency::add_friction_keys(t, {FrictionModel::constant, FrictionModel::xu_kahraman, FrictionModel::benedict_kelley,
+                                    FrictionModel::iso14179, FrictionModel::mixed});
+  t.rule([](const FrictionLawOptions& o, const std::string&) {
+    if (o.friction_model != FrictionModel::constant && !o.lubricant)
+      throw InputError(fmt::format("lubricant: missing, needed for friction.model = {}",
+                                   lubricant::friction_model_name(o.friction_model)));
+  });
+  return t;
+}
+
+}  // namespace
+
+const model::OptionTable<FrictionLawOptions>& FrictionLawOptions::table() {
+  static const auto t = make_table();
+  return t;
 }
 
 PairFriction::PairFriction(const geometry::GearPairGeometry& geometry, const std::array<model::Material, 2>& materials,
-                           const model::OperatingPoint& operating, double constant_mu, FrictionLawOptions law)
+                           const model::OperatingPoint& operating, FrictionLawOptions law)
     : geometry_(geometry),
       pinion_speed_(operating.pinion_speed),
       reduced_modulus_(model::reduced_modulus(materials)),
       mean_roughness_(0.5 * (operating.roughness_Ra[0] + operating.roughness_Ra[1])),
       lubricant_(law.lubricant) {
   law.validate();
-  law_.model = law.model;
-  law_.constant_mu = constant_mu;
-  law_.boundary_mu = law.boundary_mu;
+  law_.model = law.friction_model;
+  law_.constant_mu = law.friction_coefficient;
+  law_.boundary_mu = law.boundary_friction;
   law_.composite_roughness = lubricant::composite_rms_roughness(operating.roughness_Ra[0], operating.roughness_Ra[1]);
-  if (law.model == FrictionModel::iso14179) {
+  if (law.friction_model == FrictionModel::iso14179) {
     // The pair's ISO/TR 14179-2 mean coefficient, as the efficiency solver computes it.
     efficiency::MeshLossOptions o;
     o.friction_model = FrictionModel::iso14179;

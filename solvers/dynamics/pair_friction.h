@@ -12,24 +12,30 @@
 #include "geometry/gear_pair_geometry.h"
 #include "lubricant/friction_laws.h"
 #include "model/materials.h"
+#include "model/option_table.h"
 
 namespace gearbench::dynamics {
 
-/// A friction law other than a constant μ and the data it needs.
+/// The friction of a dynamics model: the case's "friction" section (the keys of the
+/// efficiency kind's, efficiency/friction_keys.h, every law but "ehl") and the oil the laws
+/// other than the constant one need. The holder sets its own default μ.
 struct FrictionLawOptions {
-  lubricant::FrictionModel model = lubricant::FrictionModel::constant;
-  double boundary_mu = 0.1;       ///< μ_BL of the mixed law ("friction.mu_boundary")
-  double lubricant_factor = 1.0;  ///< X_L of ISO/TR 14179-2 ("friction.lubricant_factor")
-  std::optional<model::Lubricant> lubricant;  ///< needed by every law but the constant one
+  lubricant::FrictionModel friction_model = lubricant::FrictionModel::constant;
+  double friction_coefficient = 0.0;  ///< μ of the constant law ("friction.mu")
+  double boundary_friction = 0.1;     ///< μ_BL of the mixed law ("friction.mu_boundary")
+  double lubricant_factor = 1.0;      ///< X_L of ISO/TR 14179-2 ("friction.lubricant_factor")
+  std::optional<model::Lubricant> lubricant;  ///< the case's "lubricant", needed by every law but the constant one
 
-  void validate() const;  ///< InputError naming the key
+  /// The "friction" section's keys, with the rule that a law other than the constant one needs the oil.
+  static const model::OptionTable<FrictionLawOptions>& table();
+  void validate() const { table().validate(*this, "friction."); }  ///< InputError naming the key
 };
 
 class PairFriction {
  public:
-  /// `geometry` must outlive this object; `constant_mu` is the coefficient of the constant law.
+  /// `geometry` must outlive this object.
   PairFriction(const geometry::GearPairGeometry& geometry, const std::array<model::Material, 2>& materials,
-               const model::OperatingPoint& operating, double constant_mu, FrictionLawOptions law);
+               const model::OperatingPoint& operating, FrictionLawOptions law);
 
   [[nodiscard]] bool constant() const { return law_.model == lubricant::FrictionModel::constant; }
   /// μ for the constant law, 1 otherwise.

@@ -7,11 +7,29 @@
 
 namespace gearbench::dynamics {
 
-void SpeedSweepSpec::validate() const {
-  if (!(from_rpm > 0.0)) throw InputError(fmt::format("speed_sweep_rpm.from = {}: must be above 0 rpm", from_rpm));
-  if (!(to_rpm > from_rpm))
-    throw InputError(fmt::format("speed_sweep_rpm.to = {}: must be above speed_sweep_rpm.from = {}", to_rpm, from_rpm));
-  if (points < 2) throw InputError(fmt::format("speed_sweep_rpm.points = {}: must be at least 2", points));
+namespace {
+
+model::OptionTable<SpeedSweepSpec> make_table() {
+  model::OptionTable<SpeedSweepSpec> t;
+  t.number("from", &SpeedSweepSpec::from_rpm, model::Range::positive(1e6),
+           {.description = "the first pinion speed", .unit = "rpm", .required = true});
+  t.number("to", &SpeedSweepSpec::to_rpm, model::Range::positive(1e6),
+           {.description = "the last pinion speed, above from", .unit = "rpm", .required = true});
+  t.integer("points", &SpeedSweepSpec::points, 2, 10000,
+            {.description = "equally spaced speeds from from to to", .required = true});
+  t.rule([](const SpeedSweepSpec& s, const std::string& prefix) {
+    if (!(s.to_rpm > s.from_rpm))
+      throw InputError(fmt::format("{}to = {}: must be above {}from = {}", prefix, model::format_value(s.to_rpm),
+                                   prefix, model::format_value(s.from_rpm)));
+  });
+  return t;
+}
+
+}  // namespace
+
+const model::OptionTable<SpeedSweepSpec>& SpeedSweepSpec::table() {
+  static const auto t = make_table();
+  return t;
 }
 
 SpeedSweepResult speed_sweep(const SpeedSweepSpec& spec, model::OperatingPoint base, const SpeedSolve& solve,

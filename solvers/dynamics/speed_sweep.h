@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "model/materials.h"
+#include "model/option_table.h"
 
 namespace gearbench::dynamics {
 
@@ -16,7 +17,10 @@ namespace gearbench::dynamics {
 struct SpeedSweepSpec {
   double from_rpm = 0.0, to_rpm = 0.0;
   int points = 0;
-  void validate() const;  ///< InputError naming speed_sweep_rpm.<key>
+
+  /// The keys of a case's "speed_sweep_rpm" section: "from", "to" (above "from") and "points".
+  static const model::OptionTable<SpeedSweepSpec>& table();
+  void validate() const { table().validate(*this, "speed_sweep_rpm."); }  ///< InputError naming the key
 };
 
 /// What one speed point of a model gives.

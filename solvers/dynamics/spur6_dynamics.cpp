@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <numbers>
 #include <numeric>
+#include <utility>
 
 #include "model/errors.h"
 
@@ -28,36 +29,12 @@ double line_of_action(const Spur6Parameters& p, const double* y, int first) {
 }
 }  // namespace
 
-void Spur6Options::validate() const {
-  auto positive = [](double v, const char* key) {
-    if (!(v > 0.0)) throw InputError(fmt::format("{} = {}: must be > 0", key, v));
-  };
-  positive(bearing_stiffness, "bearings.stiffness_N_per_m");
-  if (!(bearing_damping >= 0.0))
-    throw InputError(fmt::format("bearings.damping_N_s_per_m = {}: must be >= 0", bearing_damping));
-  if (!(mesh_damping_ratio >= 0.0 && mesh_damping_ratio <= 1.0))
-    throw InputError(fmt::format("mesh_damping_ratio = {}: allowed range is [0, 1]", mesh_damping_ratio));
-  if (!(friction_coefficient >= 0.0 && friction_coefficient <= 0.5))
-    throw InputError(fmt::format("friction.mu = {}: allowed range is [0, 0.5]", friction_coefficient));
-  if (runup_cycles < 0 || runup_cycles > 1000000)
-    throw InputError(fmt::format("runup_cycles = {}: allowed range is [0, 1000000]", runup_cycles));
-  if (record_cycles < 2 || record_cycles > 1000000)
-    throw InputError(fmt::format("record_cycles = {}: allowed range is [2, 1000000]", record_cycles));
-  if (crack && crack->gear != 0)
-    throw InputError(fmt::format("crack.gear = {}: allowed values are 1 (the pinion)", crack->gear + 1));
-  if (samples_per_cycle < 8 || samples_per_cycle > 4096)
-    throw InputError(fmt::format("samples_per_cycle = {}: allowed range is [8, 4096]", samples_per_cycle));
-  if (backlash && !(*backlash > 0.0 && *backlash <= 1e-2))
-    throw InputError(fmt::format("backlash_um = {}: allowed range is (0, 10000]", *backlash * 1e6));
-  friction_law.validate();
-}
-
 Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
                              const std::array<model::Material, 2>& materials,
                              const model::OperatingPoint& operating, Spur6Options options)
     : geometry_(geometry),
       options_((options.validate(), std::move(options))),
-      friction_(geometry, materials, operating, options_.friction_coefficient, options_.friction_law),
+      friction_(geometry, materials, operating, options_.friction),
       mesh_(geometry, materials, operating.pinion_speed, options_.fillet, options_.crack) {
   if (geometry_.base_helix_angle() > 0.0)
     throw InputError(fmt::format("gear_pair.helix_angle_deg = {:.6g}: model \"spur6\" needs 0 (a spur pair)",
@@ -76,7 +53,7 @@ Spur6Dynamics::Spur6Dynamics(const geometry::GearPairGeometry& geometry,
   p_.k_bearing = options_.bearing_stiffness;
   p_.c_bearing = options_.bearing_damping;
   p_.T1 = operating.pinion_torque;
-  p_.mu = options_.friction_coefficient;
+  p_.mu = options_.friction.friction_coefficient;
   p_.zeta_mesh = options_.mesh_damping_ratio;
   const auto& path = geometry_.path();
   p_.A = path.A;
@@ -226,6 +203,9 @@ Spur6Result Spur6Dynamics::solve() const {
   plan.longest_call = T_mesh;
 
   Spur6Result r;
+  r.options_given = r.options_used = options_;
+  r.options_used.runup_cycles = runup;
+  r.options_used.record_cycles = record;
   r.static_mesh_force = p_.static_force;
   r.mesh_frequency = 1.0 / T_mesh;
   const auto m = march(*this, options_.integrator, plan, static_state(), [&](double t, double t_mid, const std::vector<double>& y) {
@@ -260,8 +240,13 @@ Spur6Result Spur6Dynamics::solve() const {
   amplitude_spectrum(r.transmission_error, plan.sample_interval, r.spectrum_frequency, r.spectrum_te);
   r.natural_frequencies = natural_frequencies();
   r.periodicity = periodicity(r.transmission_error, static_cast<std::size_t>(period_cycles * options_.samples_per_cycle));
+  auto [status, message] = run_status(r.periodicity);
+  r.status = status;
+  r.message = std::move(message);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
+
+std::string Spur6Result::summary() const { return run_summary("spur6", *this); }
 
 }  // namespace gearbench::dynamics

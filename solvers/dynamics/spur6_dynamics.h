@@ -16,6 +16,7 @@
 #include "march.h"
 #include "pair_friction.h"
 #include "response_analysis.h"
+#include "run_status.h"
 #include "spur_mesh.h"
 #include "geometry/gear_pair_geometry.h"
 #include "model/materials.h"
@@ -26,8 +27,8 @@ struct Spur6Options {
   double bearing_stiffness = 1e8;    ///< k1 = k2 [N/m], x and y (gearbench default)
   double bearing_damping = 1e3;      ///< c1 = c2 [N·s/m]
   double mesh_damping_ratio = 0.07;  ///< ζ_m
-  double friction_coefficient = 0.06;  ///< μ of the constant law (seed 003)
-  FrictionLawOptions friction_law;     ///< a law of solvers/lubricant instead (docs, "Friction laws")
+  /// μ 0.06 of the constant law (seed 003), or a law of solvers/lubricant (docs, "Friction laws").
+  FrictionLawOptions friction{.friction_coefficient = 0.06};
   /// Backlash b [m]: contact loss on (docs, "Contact loss"); none: the linear mesh.
   std::optional<double> backlash;
   std::optional<stiffness::GearCrack> crack;
@@ -37,7 +38,9 @@ struct Spur6Options {
   int samples_per_cycle = 64;
   IntegratorOptions integrator;
 
-  void validate() const;             ///< InputError naming the key
+  /// The keys of a case of model "spur6" (dynamics_options.cpp).
+  static const model::OptionTable<Spur6Options>& table();
+  void validate() const { table().validate(*this); }  ///< InputError naming the key
 };
 
 /// The model's parameters, derived from the gear pair (exposed for the references).
@@ -75,6 +78,14 @@ struct Spur6Result {
   EnergyBalance energy;                      ///< over the recorded window
   long steps = 0, rhs_evaluations = 0;
   double seconds = 0.0;
+  RunStatus status = RunStatus::periodic;    ///< from the periodicity (run_status)
+  std::string message;                       ///< what the status means for the figures
+  /// The options as given and as the run used them: with a crack, run-up and record in whole
+  /// revolutions (the record at least two).
+  Spur6Options options_given, options_used;
+
+  /// One line: run length, integrator, work, time, status, dynamic factor.
+  [[nodiscard]] std::string summary() const;
 };
 
 class Spur6Dynamics final : public DynamicsModel {

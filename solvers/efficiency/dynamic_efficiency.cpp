@@ -9,11 +9,22 @@
 
 namespace gearbench::efficiency {
 
-void DynamicEfficiencyOptions::validate() const {
-  if (load_levels < 2 || load_levels > 100)
-    throw InputError(fmt::format("dynamic_efficiency.load_levels = {}: allowed range is [2, 100]", load_levels));
-  if (phases < 2 || phases > 100000)
-    throw InputError(fmt::format("dynamic_efficiency.phases = {}: allowed range is [2, 100000]", phases));
+namespace {
+
+model::OptionTable<DynamicEfficiencyOptions> make_table() {
+  model::OptionTable<DynamicEfficiencyOptions> t;
+  t.integer("load_levels", &DynamicEfficiencyOptions::load_levels, 2, 100,
+            {.description = "loss curves between the smallest and the largest mesh force of the record (seed 000: 5)"});
+  t.integer("phases", &DynamicEfficiencyOptions::phases, 4, 100000,
+            {.description = "mesh positions per loss curve, interpolated at each instant's phase"});
+  return t;
+}
+
+}  // namespace
+
+const model::OptionTable<DynamicEfficiencyOptions>& DynamicEfficiencyOptions::table() {
+  static const auto t = make_table();
+  return t;
 }
 
 namespace {

@@ -16,7 +16,10 @@ namespace gearbench::efficiency {
 struct DynamicEfficiencyOptions {
   int load_levels = 5;   ///< loss curves between the smallest and largest force (seed 000: 5)
   int phases = 100;      ///< mesh positions per loss curve
-  void validate() const;
+
+  /// The keys "load_levels" and "phases" (of the dynamics kind's "dynamic_efficiency" section).
+  static const model::OptionTable<DynamicEfficiencyOptions>& table();
+  void validate() const { table().validate(*this, "dynamic_efficiency."); }  ///< InputError naming the key
 };
 
 struct DynamicEfficiencyResult {

@@ -51,10 +51,9 @@ struct MeshLossOptions {
   /// default, (a) is available as "rolling_loss_constant_Pa": 9e9.
   double rolling_loss_constant = 6.2053e8;
 
-  /// The keys, units, ranges and descriptions of these options, at a case's root.
+  /// The keys, units, ranges and descriptions of these options, at a case's root (the
+  /// "friction" section's keys from friction_keys.h).
   static const model::OptionTable<MeshLossOptions>& table();
-  /// The "friction" section alone (the dynamics kind reads it too).
-  static const model::OptionTable<MeshLossOptions>& friction_table();
   /// InputError naming the key, its value and the allowed range.
   void validate() const { table().validate(*this); }
 };

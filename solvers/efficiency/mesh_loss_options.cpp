@@ -1,6 +1,7 @@
 // The case keys of the mesh-loss solver (issue 21: one table per Options).
 #include <fmt/format.h>
 
+#include "friction_keys.h"
 #include "mesh_loss.h"
 #include "model/errors.h"
 
@@ -12,32 +13,11 @@ using model::Range;
 
 model::OptionTable<MeshLossOptions> make_friction_table() {
   model::OptionTable<MeshLossOptions> t;
-  std::vector<std::pair<std::string, FrictionModel>> models;
-  for (const auto m : {FrictionModel::constant, FrictionModel::xu_kahraman, FrictionModel::benedict_kelley,
-                       FrictionModel::iso14179, FrictionModel::mixed, FrictionModel::ehl})
-    models.emplace_back(lubricant::friction_model_name(m), m);
-  t.choice("model", &MeshLossOptions::friction_model, models,
-           {.description = "friction law: a constant mu, Xu-Kahraman, Benedict-Kelley, ISO/TR 14179-2, the mixed "
-                           "law of seed 000, or the isothermal EHL solver with Eyring traction"});
-  t.number("mu", &MeshLossOptions::friction_coefficient, Range::closed(0.0, 0.5),
-           {.description = "the constant friction coefficient; required with model \"constant\", refused with the others"});
-  t.number("mu_boundary", &MeshLossOptions::boundary_friction, Range::closed(0.07, 0.15),
-           {.description = "boundary friction mu_BL of the mixed law (seed 000: measured 0.07-0.15)"});
-  t.number("lubricant_factor", &MeshLossOptions::lubricant_factor, Range{0.0, 2.0, true, false},
-           {.description = "X_L of ISO/TR 14179-2 (mineral oil 1)"});
+  add_friction_keys(t, {FrictionModel::constant, FrictionModel::xu_kahraman, FrictionModel::benedict_kelley,
+                        FrictionModel::iso14179, FrictionModel::mixed, FrictionModel::ehl});
   t.number("eyring_stress_MPa", &MeshLossOptions::eyring_stress, Range{0.0, 1e3, true, false},
            {.description = "Eyring stress tau0 of the \"ehl\" law; required there, refused elsewhere", .unit = "MPa",
             .scale = 1e6});
-  // Which keys a law takes depends on the law: mu belongs to the constant law alone, given or
-  // not (the default 0.05 stands only while no friction section is written).
-  t.after_read([](model::ObjectReader& r, const MeshLossOptions& o) {
-    const bool constant = o.friction_model == FrictionModel::constant;
-    const auto name = lubricant::friction_model_name(o.friction_model);
-    if (constant && !r.has("mu")) throw InputError(r.key_path("mu") + ": missing, required for friction.model = constant");
-    if (!constant && r.has("mu"))
-      throw InputError(fmt::format("{} = {}: applies to friction.model = constant only (model is {})", r.key_path("mu"),
-                                   model::format_value(o.friction_coefficient), name));
-  });
   t.rule([](const MeshLossOptions& o, const std::string& prefix) {
     const bool ehl = o.friction_model == FrictionModel::ehl;
     if (ehl && !o.eyring_stress)
@@ -50,7 +30,8 @@ model::OptionTable<MeshLossOptions> make_friction_table() {
 
 model::OptionTable<MeshLossOptions> make_table() {
   model::OptionTable<MeshLossOptions> t;
-  t.section("friction", [](auto& o) -> auto& { return o; }, MeshLossOptions::friction_table(),
+  static const auto friction = make_friction_table();
+  t.section("friction", [](auto& o) -> auto& { return o; }, friction,
             {.description = "the friction law and its parameters"});
   t.choice("load_sharing", &MeshLossOptions::load_sharing, {"equal", "iso", "stiffness"},
            {.description = "load sharing between the pairs in contact: equal (Ohlendorf), iso (ISO 6336 / TR "
@@ -66,11 +47,6 @@ model::OptionTable<MeshLossOptions> make_table() {
 }
 
 }  // namespace
-
-const model::OptionTable<MeshLossOptions>& MeshLossOptions::friction_table() {
-  static const auto t = make_friction_table();
-  return t;
-}
 
 const model::OptionTable<MeshLossOptions>& MeshLossOptions::table() {
   static const auto t = make_table();

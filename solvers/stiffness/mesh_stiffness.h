@@ -20,6 +20,10 @@ namespace gearbench::stiffness {
 /// 2 where either gear may carry the crack, 1 where only the pinion may.
 const model::OptionTable<GearCrack>& crack_table(int max_gear = 2);
 
+/// The key "fillet": the root fillet of the energy-method tooth, for every Options that
+/// builds one (the stiffness kind's, the dynamics models').
+const model::OptionTable<Fillet>& fillet_table();
+
 /// Case keys at the case's root (the table below); defaults are the initialisers here.
 struct MeshStiffnessOptions {
   BeamStart beam_start = BeamStart::improved;

@@ -26,6 +26,17 @@ model::OptionTable<GearCrack> make_crack_table(int max_gear) {
   return t;
 }
 
+model::OptionTable<Fillet> make_fillet_table() {
+  model::OptionTable<Fillet> t;
+  t.choice("fillet", [](auto& f) -> auto& { return f; },
+           std::vector<std::pair<std::string, Fillet>>{{"trochoid", Fillet::trochoid},
+                                                       {"circular_arc", Fillet::circular_arc}},
+           {.description = "root fillet of the energy-method tooth's improved beam: the trochoid the rack cutter "
+                           "generates, or seed 003's circular arc (docs/stiffness-model.md); kind stiffness: only "
+                           "with beam_start \"improved\""});
+  return t;
+}
+
 model::OptionTable<MeshStiffnessOptions> make_table() {
   model::OptionTable<MeshStiffnessOptions> t;
   t.choice("beam_start", &MeshStiffnessOptions::beam_start,
@@ -33,10 +44,7 @@ model::OptionTable<MeshStiffnessOptions> make_table() {
                {"improved", BeamStart::improved}, {"straight", BeamStart::straight}, {"base_circle", BeamStart::base_circle}},
            {.description = "where the cantilever beam starts: root circle with fillet (improved), root circle with "
                            "constant thickness below the base circle (straight), or the base circle"});
-  t.choice("fillet", &MeshStiffnessOptions::fillet,
-           std::vector<std::pair<std::string, Fillet>>{{"trochoid", Fillet::trochoid},
-                                                       {"circular_arc", Fillet::circular_arc}},
-           {.description = "fillet of the improved beam (docs/stiffness-model.md); only with beam_start \"improved\""});
+  t.include(&MeshStiffnessOptions::fillet, fillet_table());
   t.integer("positions", &MeshStiffnessOptions::positions, 2, 100000,
             {.description = "mesh positions over one mesh cycle (with a crack: over the cracked tooth's engagement)"});
   t.integer("path_points", &MeshStiffnessOptions::path_points, 2, 100000,
@@ -68,6 +76,11 @@ const model::OptionTable<GearCrack>& crack_table(int max_gear) {
   static const auto pinion_only = make_crack_table(1);
   static const auto either = make_crack_table(2);
   return max_gear == 1 ? pinion_only : either;
+}
+
+const model::OptionTable<Fillet>& fillet_table() {
+  static const auto t = make_fillet_table();
+  return t;
 }
 
 const model::OptionTable<MeshStiffnessOptions>& MeshStiffnessOptions::table() {

@@ -29,7 +29,7 @@ const SeedRun& seed000_run(const CheckContext& ctx) {
   const auto c = ctx.gear_case("seed000_herringbone_dynamics.json");
   const geometry::GearPairGeometry geometry(c.gear_pair);
   dynamics::Herringbone12Options o;
-  o.mesh.friction_coefficient = 0.05;
+  o.mesh.friction.friction_coefficient = 0.05;
   const auto r = dynamics::Herringbone12Dynamics(geometry, *c.materials, *c.operating, o).solve();
   efficiency::MeshLossOptions loss;
   loss.friction_model = lubricant::FrictionModel::mixed;

@@ -35,11 +35,10 @@ DynamicsCase lubricated(DynamicsCase c) {
 
 DynamicsCase seed003(const CheckContext& ctx) { return lubricated(dynamics_case(ctx, "seed003_spur_dynamics.json")); }
 
-dynamics::FrictionLawOptions law(lubricant::FrictionModel model) {
-  dynamics::FrictionLawOptions o;
-  o.model = model;
-  o.lubricant = oil;
-  return o;
+/// The law `model` with the seed 000 oil, keeping the model's constant μ.
+void use_law(dynamics::FrictionLawOptions& friction, lubricant::FrictionModel model) {
+  friction.friction_model = model;
+  friction.lubricant = oil;
 }
 
 /// The seed 003 pair at a resonance under a light load: 5 N·m (a tenth of the case's),
@@ -140,7 +139,7 @@ const RegisterCheck friction_law_rk4(CheckSpec{
       const auto c = seed003(ctx);
       const geometry::GearPairGeometry g(c.pair);
       Spur6Options o;
-      o.friction_law = law(lubricant::FrictionModel::benedict_kelley);
+      use_law(o.friction, lubricant::FrictionModel::benedict_kelley);
       o.runup_cycles = 0;
       o.record_cycles = 10;
       const Spur6Dynamics d(g, c.materials, c.operating, o);
@@ -168,7 +167,7 @@ const RegisterCheck friction_law_energy(CheckSpec{
       const auto c = seed003(ctx);
       const geometry::GearPairGeometry g(c.pair);
       Spur6Options o;
-      o.friction_law = law(lubricant::FrictionModel::xu_kahraman);
+      use_law(o.friction, lubricant::FrictionModel::xu_kahraman);
       o.record_cycles = 4;
       const auto r = Spur6Dynamics(g, c.materials, c.operating, o).solve();
       const auto& e = r.energy;
@@ -199,7 +198,7 @@ const RegisterSection contact_section(SectionSpec{
       for (const auto model : {lubricant::FrictionModel::constant, lubricant::FrictionModel::benedict_kelley,
                                lubricant::FrictionModel::xu_kahraman, lubricant::FrictionModel::mixed}) {
         Spur6Options f;
-        f.friction_law = law(model);
+        use_law(f.friction, model);
         f.record_cycles = 4;
         const auto r = Spur6Dynamics(g, base.materials, base.operating, f).solve();
         laws += fmt::format("{}{}: friction force rms {:.1f} N, dissipation {:.3f} J", laws.empty() ? "" : "; ",
@@ -225,7 +224,7 @@ DynamicsCase seed000(const CheckContext& ctx) { return dynamics_case(ctx, "seed0
 /// the hard excitation that parts the flanks of the smooth helical mesh.
 dynamics::Herringbone12Options herringbone_options() {
   dynamics::Herringbone12Options o;
-  o.mesh.friction_coefficient = 0.05;
+  o.mesh.friction.friction_coefficient = 0.05;
   o.mesh_in_impact = true;
   o.impact_held_velocity = true;
   o.runup_cycles = 40;
@@ -291,7 +290,7 @@ const RegisterCheck herringbone_friction_energy(CheckSpec{
       const auto c = seed000(ctx);
       const geometry::GearPairGeometry g(c.pair);
       auto o = herringbone_options();
-      o.mesh.friction_law = law(lubricant::FrictionModel::xu_kahraman);
+      use_law(o.mesh.friction, lubricant::FrictionModel::xu_kahraman);
       const dynamics::Herringbone12Dynamics d(g, c.materials, c.operating, o);
       const auto r = d.solve();
       const auto& e = r.energy;

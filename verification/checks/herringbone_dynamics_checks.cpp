@@ -35,7 +35,7 @@ DynamicsCase seed000(const CheckContext& ctx) { return dynamics_case(ctx, "seed0
 /// The options of cases/seed000_herringbone_dynamics.json (the defaults, μ = 0.05).
 dynamics::Herringbone12Options seed000_options() {
   dynamics::Herringbone12Options o;
-  o.mesh.friction_coefficient = 0.05;
+  o.mesh.friction.friction_coefficient = 0.05;
   return o;
 }
 
@@ -65,7 +65,7 @@ const RegisterCheck herringbone_reduces_to_spur(CheckSpec{
       o.groove_damping = o.twist_damping = 0.0;
       o.mesh_in_impact = false;
       o.mesh_damping_ratio = spur.mesh_damping_ratio;
-      o.mesh.friction_coefficient = spur.friction_coefficient;
+      o.mesh.friction.friction_coefficient = spur.friction.friction_coefficient;
       o.runup_cycles = 0;
       o.record_cycles = 10;
       auto operating = c.operating;
