@@ -1,5 +1,5 @@
 // The solver kinds through the gearbench executable: EHL, transient EHL, oil-film stiffness,
-// dynamics, efficiency and thermal EHL each run on a small case, validate their
+// dynamics, the FE tooth, efficiency and thermal EHL each run on a small case, validate their
 // input (exit 2 naming the key) and report non-convergence (exit 3, diagnostics still written).
 #include <gtest/gtest.h>
 #include <algorithm>
@@ -425,6 +425,69 @@ TEST(Cli, HerringboneDynamicsRunsSweepsAndValidates) {
     const auto e = run_gearbench("run " + write_case("herringbone_bad_" + std::to_string(n++), c.dump()));
     EXPECT_EQ(e.exit_code, 2) << e.err;
     EXPECT_NE(e.err.find(expected), std::string::npos) << e.err;
+  }
+}
+
+// The FE tooth reference through the CLI on a coarse mesh (one position, linear elements):
+// the record of its options, its convergence message and summary, exit 3 when a solve misses
+// its tolerance, and every key of its table refused out of range, naming key, value and range.
+TEST(Cli, FeStiffnessRunsAndValidates) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed003_fe_stiffness.json");
+  auto j = json::parse(in);
+  j["positions"] = 1;
+  j["fe"] = {{"degree", 1}, {"max_cycles", 3}, {"tolerance", 0.1}};
+  j["mesh"] = {{"near_size_modules", 0.5}, {"far_size_modules", 3.0}};
+  const auto o = run_gearbench("run " + write_case("fe_coarse", j.dump()));
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  EXPECT_TRUE(r["converged"].get<bool>());
+  EXPECT_EQ(r["message"], "converged: all 2 solves met fe.tolerance = 0.1 within fe.max_cycles = 3");
+  EXPECT_NE(o.err.find("gearbench: fe_stiffness: 1 positions x 2 teeth, plane stress, degree 1: converged"),
+            std::string::npos) << o.err;
+  // The bore the case left to its default is recorded as used; the defaults are the schema's.
+  EXPECT_FALSE(r["options_given"].contains("bore_diameter_mm"));
+  EXPECT_EQ(r["options_used"]["bore_diameter_mm"].size(), 2u);
+  const auto schema = json::parse(run_gearbench("schema fe_stiffness").out)["properties"];
+  EXPECT_EQ(r["options_given"]["load_N_per_mm"], schema["load_N_per_mm"]["default"]);
+  EXPECT_EQ(r["options_given"]["fe"]["refine_fraction"], schema["fe"]["properties"]["refine_fraction"]["default"]);
+
+  auto strict = j;
+  strict["fe"]["tolerance"] = 1e-4;
+  const auto out = temp_path("fe_unconverged.json").string();
+  const auto failed = run_gearbench("run " + write_case("fe_strict", strict.dump()) + " -o " + out);
+  EXPECT_EQ(failed.exit_code, 3) << failed.err;
+  EXPECT_NE(failed.err.find("error: fe_stiffness: not converged: 2 of 2 solves missed fe.tolerance = 0.0001"),
+            std::string::npos) << failed.err;
+  std::ifstream diagnostics(out);
+  EXPECT_FALSE(json::parse(diagnostics)["converged"].get<bool>());
+  fs::remove(out);
+
+  const std::pair<std::function<void(json&)>, std::string> bad[] = {
+      {[](json& c) { c["fe"]["degree"] = 5; }, "fe.degree = 5: allowed range is [1, 4]"},
+      {[](json& c) { c["fe"]["max_cycles"] = 2; }, "fe.max_cycles = 2: allowed range is [3, 20]"},
+      {[](json& c) { c["fe"]["refine_fraction"] = 1; }, "fe.refine_fraction = 1: allowed range is (0, 1)"},
+      {[](json& c) { c["fe"]["tolerance"] = 0.5; }, "fe.tolerance = 0.5: allowed range is (0, 0.5)"},
+      {[](json& c) { c["mesh"]["near_size_modules"] = 0.01; }, "mesh.near_size_modules = 0.01: allowed range is (0.01, 1]"},
+      {[](json& c) { c["mesh"]["far_size_modules"] = 0.2; },
+       "mesh.far_size_modules = 0.2: must be at least mesh.near_size_modules = 0.5"},
+      {[](json& c) { c["positions"] = 0; }, "positions = 0: allowed range is [1, 200]"},
+      {[](json& c) { c["load_N_per_mm"] = 0; }, "load_N_per_mm = 0: allowed range is (0, 100000] N/mm"},
+      {[](json& c) { c["bore_diameter_mm"] = {-1, 10}; }, "bore_diameter_mm[0] = -1: allowed range is (0, 10000000] mm"},
+      {[](json& c) { c["rigid_body"] = "yes"; }, "rigid_body = \"yes\": must be true or false"},
+      {[](json& c) { c["crack"] = {{"type", "root"}, {"length_mm", 1}, {"angle_deg", 45}}; },
+       "crack.type = \"root\": allowed values are pitch"},
+      {[](json& c) { c["crack"] = {{"type", "pitch"}, {"length_mm", 1}, {"angle_deg", 90}}; },
+       "crack.angle_deg = 90: allowed range is (0, 90) deg"},
+      {[](json& c) { c["crack"] = {{"type", "pitch"}, {"length_mm", 1}, {"angle_deg", 45}, {"gear", 3}}; },
+       "crack.gear = 3: allowed range is [1, 2]"},
+      {[](json& c) { c["fe"]["not_a_key"] = 1; }, "fe.not_a_key"},
+  };
+  int n = 0;
+  for (const auto& [edit, expected] : bad) {
+    auto c = j;
+    edit(c);
+    const auto e = run_gearbench("run " + write_case("fe_bad_" + std::to_string(n++), c.dump()));
+    expect_one_error_line(e, expected);
   }
 }
 

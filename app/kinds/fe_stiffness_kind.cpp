@@ -3,11 +3,12 @@
 // compliance, the pair stiffness with Hertz added, the convergence of every solve, and
 // optionally a VTU file (displacement, von Mises) of the first position's pinion solve.
 // The optional "crack" section (the stiffness kind's keys, type "pitch") cracks one gear's
-// loaded tooth as a slit in the mesh.
+// loaded tooth as a slit in the mesh. Every key comes from the reference's Options tables
+// (reference/fe_tooth/fe_tooth_options.cpp).
 #include <cmath>
 #include <fstream>
 
-#include "tooth_sections.h"
+#include "case_schema.h"
 #include "fe_tooth/fe_tooth_stiffness.h"
 #include "kind_registry.h"
 #include "model/case_reader.h"
@@ -19,52 +20,24 @@ namespace {
 using nlohmann::json;
 namespace fe = reference::fe;
 
-fe::ElasticOptions read_fe_options(model::ObjectReader& root) {
-  fe::ElasticOptions o;
-  if (!root.has("fe")) return o;
-  auto s = root.object("fe");
-  o.degree = s.optional_integer("degree", 1, 4).value_or(o.degree);
-  o.max_cycles = s.optional_integer("max_cycles", 3, 20).value_or(o.max_cycles);
-  o.refine_fraction = s.optional_number("refine_fraction", {0.0, 1.0, true, true}).value_or(o.refine_fraction);
-  o.tolerance = s.optional_number("tolerance", {0.0, 0.5, true, true}).value_or(o.tolerance);
-  s.finish();
-  return o;
-}
+/// The keys of an fe_stiffness case beside the gear pair and materials: the reference's
+/// options and where to write the VTU file.
+struct FeStiffnessCase {
+  fe::FeToothOptions options;
+  std::string vtu_output;  ///< empty: none
 
-/// The stiffness kind's "crack" section; the FE slit models seed 003's pitch crack.
-std::optional<fe::ToothCrack> read_fe_crack(model::ObjectReader& root) {
-  const auto c = read_crack(root, 2);
-  if (!c) return std::nullopt;
-  if (c->crack.type != stiffness::Crack::Type::pitch)
-    throw InputError("crack.type = root: kind fe_stiffness models the pitch crack (seed 003) only");
-  return fe::ToothCrack{c->gear, c->crack.length, c->crack.angle};
-}
-
-fe::FeToothOptions read_options(model::ObjectReader& root, const json& case_json) {
-  fe::FeToothOptions o;
-  if (root.has("plane_stress")) {
-    if (!case_json["plane_stress"].is_boolean())
-      throw InputError("plane_stress = " + model::shown_value(case_json["plane_stress"]) + ": must be true or false");
-    o.plane_strain = !case_json["plane_stress"].get<bool>();
+  static const model::OptionTable<FeStiffnessCase>& table() {
+    static const auto table = [] {
+      model::OptionTable<FeStiffnessCase> t;
+      t.include(&FeStiffnessCase::options, fe::FeToothOptions::table());
+      t.text("vtu_output", &FeStiffnessCase::vtu_output,
+             {.description = "a VTU file to write of the first position's pinion solve (displacement, von Mises)",
+              .default_text = "none"});
+      return t;
+    }();
+    return table;
   }
-  if (auto bore = root.optional_number_pair("bore_diameter_mm", model::Range::positive(1e7), "mm"))
-    o.bore_radius = std::array<double, 2>{0.5e-3 * (*bore)[0], 0.5e-3 * (*bore)[1]};
-  o.load_per_width = root.optional_number("load_N_per_mm", model::Range::positive(1e5), "N/mm").value_or(100.0) * 1e3;
-  if (root.has("mesh")) {
-    auto m = root.object("mesh");
-    o.near_size_modules = m.optional_number("near_size_modules", {0.01, 1.0, true, false}).value_or(o.near_size_modules);
-    o.far_size_modules = m.optional_number("far_size_modules", {0.01, 5.0, true, false}).value_or(o.far_size_modules);
-    m.finish();
-  }
-  if (root.has("rigid_body")) {
-    if (!case_json["rigid_body"].is_boolean())
-      throw InputError("rigid_body = " + model::shown_value(case_json["rigid_body"]) + ": must be true or false");
-    o.rigid_body = case_json["rigid_body"].get<bool>();
-  }
-  o.fe = read_fe_options(root);
-  o.crack = read_fe_crack(root);
-  return o;
-}
+};
 
 json convergence_json(const fe::ElasticResult& r) {
   json rows = json::array();
@@ -92,20 +65,18 @@ json run_fe_stiffness(const json& case_json) {
   root.optional_string("description");
   const auto gear_case = model::read_gear_case(root);
   if (!gear_case.materials) throw InputError("materials: missing required key (kind fe_stiffness)");
-  const int count = root.optional_integer("positions", 1, 200).value_or(5);
-  auto options = read_options(root, case_json);
-  const auto vtu_path = root.optional_string("vtu_output");
-  options.vtu = vtu_path.has_value();
+  FeStiffnessCase k;
+  FeStiffnessCase::table().read(root, k);
   root.finish();
+  auto& options = k.options;
+  options.vtu = !k.vtu_output.empty();
 
   const fe::FeToothStiffness model(gear_case.gear_pair, *gear_case.materials, options);
   const auto& path = model.path();
-  std::vector<double> s;
-  for (int i = 0; i < count; ++i) s.push_back(count == 1 ? 0.5 * (path.A + path.E) : path.A + (path.E - path.A) * i / (count - 1));
-  const auto r = model.solve(s);
-  if (vtu_path) {
-    std::ofstream out(*vtu_path);
-    if (!(out << r.vtu)) throw InputError("vtu_output = " + *vtu_path + ": cannot write the file");
+  const auto r = model.solve();
+  if (options.vtu) {
+    std::ofstream out(k.vtu_output);
+    if (!(out << r.vtu)) throw InputError("vtu_output = " + k.vtu_output + ": cannot write the file");
   }
 
   json positions_mm = json::array(), pair = json::array(), pair_fe_contact = json::array(),
@@ -141,25 +112,37 @@ json run_fe_stiffness(const json& case_json) {
                      {"bore_radius_mm", r.bore_radius[g] * 1e3},
                      {"initial_cells", r.initial_cells[g]},
                      {"convergence", convergence[g]}});
-  return {{"kind", "fe_stiffness"},
-          {"plane", options.plane_strain ? "strain" : "stress"},
-          {"rigid_body", options.rigid_body},
-          {"crack", crack_json(model)},
-          {"path_of_contact_mm", {{"A", path.A * 1e3}, {"E", path.E * 1e3}, {"T1T2", path.t1t2 * 1e3}}},
-          {"path_position_mm", positions_mm},
-          {"gears", gears},
-          {"hertz_N_per_m", hertz},
-          {"pair_stiffness_N_per_m", pair},
-          {"pair_stiffness_fe_contact_N_per_m", pair_fe_contact},
-          {"converged", r.converged},
-          {"seconds_per_position", seconds},
-          {"seconds", r.seconds},
-          {"vtu_output", vtu_path.value_or("")}};
+  const auto& table = fe::FeToothOptions::table();
+  json result = {{"kind", "fe_stiffness"},
+                 {"plane", options.plane_stress ? "stress" : "strain"},
+                 {"rigid_body", options.rigid_body},
+                 {"crack", crack_json(model)},
+                 {"path_of_contact_mm", {{"A", path.A * 1e3}, {"E", path.E * 1e3}, {"T1T2", path.t1t2 * 1e3}}},
+                 {"path_position_mm", positions_mm},
+                 {"gears", gears},
+                 {"hertz_N_per_m", hertz},
+                 {"pair_stiffness_N_per_m", pair},
+                 {"pair_stiffness_fe_contact_N_per_m", pair_fe_contact},
+                 {"converged", r.converged},
+                 {"message", r.message},
+                 {"summary", r.summary()},
+                 {"options_given", table.to_json(r.options_given)},
+                 {"options_used", table.to_json(r.options_used)},
+                 {"seconds_per_position", seconds},
+                 {"seconds", r.seconds},
+                 {"vtu_output", k.vtu_output}};
+  // The CLI's contract: a solve that did not converge exits 3, its figures written where asked.
+  if (!r.converged) throw ConvergenceError("fe_stiffness: " + r.message, result.dump(2));
+  return result;
+}
+
+std::vector<json> fe_stiffness_schema() {
+  return {gear_case_schema({"materials"}), FeStiffnessCase::table().schema()};
 }
 
 const RegisterKind fe_stiffness_kind({"fe_stiffness",
                                       "deal.II finite-element tooth compliance and pair stiffness along A..E",
-                                      run_fe_stiffness});
+                                      run_fe_stiffness, fe_stiffness_schema});
 
 }  // namespace
 }  // namespace gearbench::app

@@ -20,6 +20,7 @@ QuadMesh rectangle_mesh(double length, double height, int nx, int ny) {
 CantileverResult solve_cantilever(const Cantilever& c, const ElasticOptions& options) {
   if (!(c.length > 0 && c.height > 0 && c.cells_along > 0 && c.cells_across > 0))
     throw InputError("cantilever: length, height and cell counts must be positive");
+  options.validate();  // before the options cross into the plugin
   const double L = c.length, H = c.height;
   ElasticProblem p;
   p.mesh = rectangle_mesh(L, H, c.cells_along, c.cells_across);

@@ -15,6 +15,7 @@ struct ToothCrack {
   int gear = 0;         ///< 0 pinion, 1 wheel
   double length = 0.0;  ///< q [m]
   double angle = 0.0;   ///< ν to the tooth centre line [rad]
+  enum class Type { pitch } type = Type::pitch;  ///< the case key "type": the slit models the pitch crack only
 };
 
 /// The crack line in tooth coordinates (centre line on +x, loaded flank y > 0).

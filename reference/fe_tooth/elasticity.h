@@ -9,6 +9,11 @@
 
 #include "gear_mesh.h"
 
+namespace gearbench::model {
+template <class O>
+class OptionTable;
+}  // namespace gearbench::model
+
 namespace gearbench::reference::fe {
 
 struct ElasticMaterial {
@@ -65,6 +70,9 @@ struct ElasticOptions {
   double refine_fraction = 0.3; ///< share of cells Kelly marks for refinement per cycle
   double tolerance = 0.005;     ///< converged: the last two relative changes are below it
   bool vtu = false;             ///< keep a VTU (displacement, von Mises) of the last mesh
+
+  /// The keys of a case's "fe" section (fe_tooth_options.cpp, outside the plugin).
+  static const model::OptionTable<ElasticOptions>& table();
   void validate() const;        ///< InputError naming the option
 };
 
@@ -91,7 +99,9 @@ struct ElasticResult {
   double seconds = 0.0;
 };
 
-/// In the deal.II plugin (fe_backend.h): programs call it as fe_backend().solve_elastic.
+/// In the deal.II plugin (fe_backend.h): programs call it as fe_backend().solve_elastic, with
+/// options they have validated (validate() and its table live outside the plugin, which links
+/// nothing of ours).
 ElasticResult solve_elastic(const ElasticProblem& problem, const ElasticOptions& options);
 
 }  // namespace gearbench::reference::fe

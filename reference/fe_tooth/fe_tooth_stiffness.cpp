@@ -53,25 +53,29 @@ Vec2 project_onto(const std::vector<Vec2>& line, const Vec2& p) {
   return out;
 }
 
-}  // namespace
-
-void FeToothOptions::validate() const {
-  if (bore_radius && !((*bore_radius)[0] > 0 && (*bore_radius)[1] > 0))
-    throw InputError("bore_diameter_mm: must be positive");
-  if (!(load_per_width > 0.0 && load_per_width < 1e8))
-    throw InputError(fmt::format("load_N_per_mm = {}: must lie in (0, 1e5)", load_per_width * 1e-3));
-  if (!(near_size_modules > 0.01 && near_size_modules <= 1.0))
-    throw InputError(fmt::format("mesh.near_size_modules = {}: must lie in (0.01, 1]", near_size_modules));
-  if (!(far_size_modules >= near_size_modules && far_size_modules <= 5.0))
-    throw InputError(fmt::format("mesh.far_size_modules = {}: must lie in [near_size_modules, 5]", far_size_modules));
-  if (crack) {
-    if (crack->gear < 0 || crack->gear > 1)
-      throw InputError(fmt::format("crack.gear = {}: must be 1 or 2", crack->gear + 1));
-    if (!(crack->length >= 0.0))
-      throw InputError(fmt::format("crack.length_mm = {}: must be ≥ 0", crack->length * 1e3));
-  }
-  fe.validate();
+/// Which solves missed fe.tolerance within fe.max_cycles (the first named), or that none did.
+std::string convergence_message(const FeToothResult& r) {
+  int solves = 0, missed = 0;
+  std::string first;
+  for (const auto& p : r.positions)
+    for (std::size_t g = 0; g < 2; ++g) {
+      const auto& fe = p.tooth[g].fe;
+      ++solves;
+      if (fe.converged) continue;
+      if (++missed == 1)
+        first = fmt::format("gear {} at s = {:.4g} mm, last relative change {:.2g}", g + 1, p.path_position * 1e3,
+                            fe.cycles.empty() ? 0.0 : fe.cycles.back().change);
+    }
+  const auto& o = r.options_used.fe;
+  if (missed == 0)
+    return fmt::format("converged: all {} solves met fe.tolerance = {} within fe.max_cycles = {}", solves,
+                       model::format_value(o.tolerance), o.max_cycles);
+  return fmt::format("not converged: {} of {} solves missed fe.tolerance = {} within fe.max_cycles = {} (first: {}); "
+                     "raise fe.max_cycles or fe.tolerance",
+                     missed, solves, model::format_value(o.tolerance), o.max_cycles, first);
 }
+
+}  // namespace
 
 double hertz_line_compliance(const model::Material& a, const model::Material& b, double face_width) {
   return 2.0 / (pi * face_width) *
@@ -144,7 +148,7 @@ ToothCompliance FeToothStiffness::solve_tooth(int gear, double s, bool vtu, doub
   ElasticProblem p;
   p.mesh = with_slit ? slit_meshes_[i] : meshes_[i];
   p.converge_on_load = with_slit;
-  p.material = {materials_[i].youngs_modulus, materials_[i].poisson_ratio, options_.plane_strain};
+  p.material = {materials_[i].youngs_modulus, materials_[i].poisson_ratio, !options_.plane_stress};
   p.clamped = [bore](const Vec2& x) { return std::hypot(x[0], x[1]) < bore * (1 + 1e-3); };
   // The slit's faces are free boundary: neither loaded nor on the curved outline (their
   // midpoints lie on the slit's segment, up to rounding).
@@ -205,6 +209,8 @@ FePosition FeToothStiffness::at(double s, bool vtu) const {
 FeToothResult FeToothStiffness::solve(const std::vector<double>& positions) const {
   const auto start = std::chrono::steady_clock::now();
   FeToothResult r;
+  r.options_given = r.options_used = options_;
+  r.options_used.bore_radius = bore_;
   r.path = path_;
   r.radii = {teeth_[0].radii, teeth_[1].radii};
   r.bore_radius = bore_;
@@ -217,9 +223,27 @@ FeToothResult FeToothStiffness::solve(const std::vector<double>& positions) cons
     r.positions.push_back(at(s, options_.vtu && k == 0));
     for (const auto& t : r.positions.back().tooth) r.converged = r.converged && t.fe.converged;
   }
+  r.message = convergence_message(r);
   if (options_.vtu && !r.positions.empty()) r.vtu = std::move(r.positions.front().tooth[0].fe.vtu);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
+}
+
+FeToothResult FeToothStiffness::solve() const {
+  const int n = options_.positions;
+  std::vector<double> s;
+  for (int i = 0; i < n; ++i) s.push_back(n == 1 ? 0.5 * (path_.A + path_.E) : path_.A + (path_.E - path_.A) * i / (n - 1));
+  return solve(s);
+}
+
+std::string FeToothResult::summary() const {
+  unsigned dofs = 0;
+  for (const auto& p : positions)
+    for (const auto& t : p.tooth) dofs = std::max(dofs, t.fe.cycles.empty() ? 0u : t.fe.cycles.back().dofs);
+  const auto& o = options_used;
+  return fmt::format("fe_stiffness: {} positions x 2 teeth, plane {}, degree {}: {}; largest mesh {} dofs; {:.1f} s",
+                     positions.size(), o.plane_stress ? "stress" : "strain", o.fe.degree,
+                     converged ? "converged" : "NOT converged", dofs, seconds);
 }
 
 }  // namespace gearbench::reference::fe

@@ -14,15 +14,20 @@
 #include "elasticity.h"
 #include "model/gear_pair.h"
 #include "model/materials.h"
+#include "model/option_table.h"
 
 namespace gearbench::reference::fe {
 
+/// The keys of an fe_stiffness case beside the gear pair and materials (fe_tooth_options.cpp).
+/// They are this reference's own, not the energy method's (reference/ reads no solver's
+/// tables): the shared keys (crack, bore_diameter_mm) are named alike so one case serves both.
 struct FeToothOptions {
-  bool plane_strain = true;                          ///< else plane stress
+  bool plane_stress = false;                         ///< else plane strain
   std::optional<std::array<double, 2>> bore_radius;  ///< [m]; default r_f/2 per gear
   double load_per_width = 1e5;        ///< normal force per face width [N/m] (Hertz width)
   double near_size_modules = 0.25;    ///< initial element size at the loaded tooth [m_n]
   double far_size_modules = 1.5;      ///< largest initial element size [m_n]
+  int positions = 5;                  ///< solve(): equally spaced along A..E (one: the middle)
   ElasticOptions fe;                  ///< degree, cycles, Kelly fraction, tolerance
   bool vtu = false;                   ///< VTU of the first solve (gear 1, first position)
   /// Diagnostic: the body inside the root circle 1000× stiffer, so that the probe sees the
@@ -30,7 +35,9 @@ struct FeToothOptions {
   bool rigid_body = false;
   /// A crack in one gear's loaded tooth, meshed as a slit (docs/fe-tooth-model.md, "Cracks").
   std::optional<ToothCrack> crack;
-  void validate() const;              ///< InputError naming the key
+
+  static const model::OptionTable<FeToothOptions>& table();
+  void validate() const { table().validate(*this); }  ///< InputError naming the key
 };
 
 /// One gear's tooth at one mesh position. A cracked tooth is solved twice, healthy and with
@@ -69,8 +76,14 @@ struct FeToothResult {
   std::array<double, 2> bore_radius{};
   std::array<std::size_t, 2> initial_cells{};
   bool converged = true;           ///< every solve met the tolerance
+  std::string message;             ///< which solves missed it, or that none did
   std::string vtu;
   double seconds = 0.0;
+  /// The options as given and as used: the bore radii filled in where the case gave none.
+  FeToothOptions options_given, options_used;
+
+  /// One line: positions, elements, status, largest mesh, time.
+  [[nodiscard]] std::string summary() const;
 };
 
 class FeToothStiffness {
@@ -89,6 +102,8 @@ class FeToothStiffness {
   [[nodiscard]] FePosition at(double s, bool vtu = false) const;
   /// The given positions (s from T1 [m]).
   [[nodiscard]] FeToothResult solve(const std::vector<double>& positions) const;
+  /// options.positions equally spaced along A..E.
+  [[nodiscard]] FeToothResult solve() const;
 
   [[nodiscard]] const ContactPath& path() const { return path_; }
   [[nodiscard]] const ToothOutline& tooth(int gear) const { return teeth_[static_cast<std::size_t>(gear)]; }

@@ -79,7 +79,7 @@ struct Comparison {
 
 fe::FeToothOptions plane_stress(bool rigid_body) {
   fe::FeToothOptions options;
-  options.plane_strain = false;  // the energy method's E and G = E/(2(1 + ν)): plane stress
+  options.plane_stress = true;  // the energy method's E and G = E/(2(1 + ν)): plane stress
   options.rigid_body = rigid_body;
   return options;
 }
