@@ -268,6 +268,7 @@ class FasMultigrid::Impl {
 
   // --- stop and figures (fas_stop.cpp) ----------------------------------------
   [[nodiscard]] static double level_error_estimate(const std::vector<double>& figures);
+  /// A new full-multigrid level: the previous level's h_min and p_max become the coarse ones.
   void record_fmg_level(EhlResult& r, std::size_t k);
 
   [[nodiscard]] Watched watched(Level& l);
@@ -298,9 +299,6 @@ class FasMultigrid::Impl {
   void accept(EhlResult& r, std::string message);
 
   static void reject(EhlResult& r, std::string message);
-
-  /// h_min and p_max of a full-multigrid level; the previous level's become the coarse ones.
-  void remember_level_figures(const Level& l);
 
   void fill_figures(const Level& l, EhlResult& r) const;
 

@@ -32,15 +32,16 @@ FilmMinimum film_minimum(const std::vector<double>& X, const std::vector<double>
 }  // namespace
 
 void FasMultigrid::Impl::record_fmg_level(EhlResult& r, std::size_t k) {
-  Level& l = *levels_[k];
-  const Watched w = watched(l);
-  r.fmg_nodes.push_back(static_cast<double>(l.n));
-  r.fmg_H_c.push_back(w.H_c);
-  r.fmg_H_min.push_back(w.H_min);
-  remember_level_figures(l);
-  if (r.fmg_H_c.size() < 2) return;
-  r.error_estimate = std::max(level_error_estimate(r.fmg_H_c), level_error_estimate(r.fmg_H_min));
-  if (!(w.H_min > 0.0)) r.error_estimate = std::numeric_limits<double>::infinity();
+  r.fmg_nodes.push_back(static_cast<double>(levels_[k]->n));
+  r.fmg_H_c.push_back(0.0);
+  r.fmg_H_min.push_back(0.0);
+  if (has_level_) {  // the previous level's figures become the coarse ones
+    coarse_h_min_ = level_h_min_;
+    coarse_p_max_ = level_p_max_;
+    has_coarse_ = true;
+  }
+  has_level_ = true;
+  update_fmg_level(r, k);
 }
 
 /// The discretisation error of the last full-multigrid level from the changes δ_k (last) and
@@ -80,6 +81,7 @@ void FasMultigrid::Impl::update_fmg_level(EhlResult& r, std::size_t k) {
   fill_figures(l, figures);
   level_h_min_ = figures.h_min;
   level_p_max_ = figures.p_max;
+  if (r.fmg_H_c.size() < 2) return;
   r.error_estimate = std::max(level_error_estimate(r.fmg_H_c), level_error_estimate(r.fmg_H_min));
   if (!(w.H_min > 0.0)) r.error_estimate = std::numeric_limits<double>::infinity();
 }
@@ -174,19 +176,6 @@ void FasMultigrid::Impl::accept(EhlResult& r, std::string message) {
 void FasMultigrid::Impl::reject(EhlResult& r, std::string message) {
   r.converged = false;
   r.message = std::move(message);
-}
-
-void FasMultigrid::Impl::remember_level_figures(const Level& l) {
-  if (has_level_) {
-    coarse_h_min_ = level_h_min_;
-    coarse_p_max_ = level_p_max_;
-    has_coarse_ = true;
-  }
-  EhlResult figures;
-  fill_figures(l, figures);
-  level_h_min_ = figures.h_min;
-  level_p_max_ = figures.p_max;
-  has_level_ = true;
 }
 
 void FasMultigrid::Impl::fill_figures(const Level& l, EhlResult& r) const {
