@@ -13,8 +13,8 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance) {
   const auto start = std::chrono::steady_clock::now();
   double merit = coarsest_merit(l);
   for (int s = 0; s < steps; ++s) {
-    const CoarsestStep step =
-        coarsest_newton_step(coefficients(l), l.P, residuals(l), film_sensitivity(l), l.g - integral(l));
+    const CoarsestStep step = coarsest_newton_step(coefficients(l), l.P, coarsest_residuals(l),
+                                                   film_sensitivity(l), l.g - integral(l));
     node_sweeps_ += dense_step_cost * std::pow(static_cast<double>(l.n), 3);
     if (step.info != StepInfo::success) {
       const auto& d = problem_.data();
@@ -54,11 +54,18 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance) {
   l.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+std::vector<double> FasMultigrid::Impl::coarsest_residuals(const Level& l) const {
+  std::vector<double> r = residuals(l);
+  for (std::size_t i = 0; i < l.n; ++i)
+    if (l.cavitated_on_finer[i]) r[i] = 0.0;
+  return r;
+}
+
 double FasMultigrid::Impl::coarsest_merit(Level& l) {
   update_film(l);
   update_coefficients(l);
   node_sweeps_ += static_cast<double>(l.n);
-  const auto r = residuals(l);
+  const auto r = coarsest_residuals(l);
   double sum = 0.0;
   for (std::size_t i = 1; i + 1 < l.n; ++i) {
     const double part = l.P[i] > 0.0 ? r[i] : std::min(r[i], 0.0);

@@ -35,11 +35,9 @@ void FasMultigrid::Impl::correct(const Level& coarse, const std::vector<double>&
     correction[2 * I + 1] = 0.5 * (d0 + d1);
   }
   // Where to correct is decided on the pressure before the correction.
-  const std::size_t last = last_pressurised(fine.P);
-  const auto held = static_cast<std::size_t>(o_.free_boundary_nodes);
   std::vector<char> corrected(fine.n, 0);
   for (std::size_t i = 1; i + 1 < fine.n; ++i)
-    corrected[i] = fine.P[i - 1] > 0.0 && fine.P[i] > 0.0 && fine.P[i + 1] > 0.0 && i + held <= last;
+    corrected[i] = fine.P[i - 1] > 0.0 && fine.P[i] > 0.0 && fine.P[i + 1] > 0.0;
   for (std::size_t i = 1; i + 1 < fine.n; ++i)
     if (corrected[i]) fine.P[i] = std::max(0.0, fine.P[i] + limit_change(fine, i, correction[i]));
 }
@@ -50,7 +48,10 @@ void FasMultigrid::Impl::restrict_problem(Level& fine, Level& coarse) {
   std::vector<double> r = residuals(fine);
   for (std::size_t i = 1; i + 1 < fine.n; ++i)
     if (fine.P[i] <= 0.0) r[i] = 0.0;
-  for (std::size_t I = 0; I < coarse.n; ++I) coarse.P[I] = fine.P[2 * I];
+  for (std::size_t I = 0; I < coarse.n; ++I) {
+    coarse.P[I] = fine.P[2 * I];
+    coarse.cavitated_on_finer[I] = I > 0 && I + 1 < coarse.n && fine.P[2 * I] <= 0.0;
+  }
   coarse.film_correction.clear();
   update_film(coarse);
   coarse.film_correction.resize(coarse.n);

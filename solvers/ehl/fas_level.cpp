@@ -132,6 +132,7 @@ double FasMultigrid::Impl::scaled_residual(Level& l) {
 void FasMultigrid::Impl::make_finest(Level& l) {
   l.film_correction.clear();
   std::fill(l.f.begin(), l.f.end(), 0.0);
+  std::fill(l.cavitated_on_finer.begin(), l.cavitated_on_finer.end(), 0);
   l.g = state_.load;
 }
 

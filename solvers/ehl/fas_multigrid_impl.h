@@ -64,7 +64,7 @@ class FasMultigrid::Impl {
     Level(std::size_t nodes, double x_in, double x_out)
         : n(nodes), h((x_out - x_in) / static_cast<double>(nodes - 1)), deformation(nodes, h),
           X(nodes), P(nodes, 0.0), H(nodes, 0.0), W(nodes, 0.0), rho(nodes, 1.0), eps_face(nodes - 1, 0.0),
-          f(nodes, 0.0), flow_factor(nodes, 1.0), wedge_factor(nodes, 1.0) {
+          f(nodes, 0.0), flow_factor(nodes, 1.0), wedge_factor(nodes, 1.0), cavitated_on_finer(nodes, 0) {
       for (std::size_t i = 0; i < n; ++i) X[i] = x_in + static_cast<double>(i) * h;
     }
     std::size_t n;
@@ -86,6 +86,14 @@ class FasMultigrid::Impl {
     /// FAS right-hand side of the film equation on a coarse grid: the injected fine film minus
     /// the coarse film of the injected pressure (Venner & Lubrecht 2000, §6.4).
     std::vector<double> film_correction;
+    /// On a coarse grid, the nodes whose finer-grid node is cavitated: they stay at zero, so
+    /// that the coarse correction lives in the finer grid's pressurised set and the free
+    /// boundary is the finest grid's to move (truncated multigrid for obstacle problems:
+    /// Kornhuber 1994; Gräser & Kornhuber 2009). Left free, such a node sits exactly at its
+    /// complementarity switch (its restricted residual is zero there) and flips between
+    /// cavitated and pressurised from one cycle to the next: factor 0.69 at (2, 10) on 2049
+    /// nodes, 0.04–0.2 held (docs/research/ehl-multigrid-rebuild.md, twelfth session).
+    std::vector<char> cavitated_on_finer;
     double g = 0.0;  ///< FAS right-hand side of the force balance
     double seconds = 0.0;
   };
@@ -185,8 +193,17 @@ class FasMultigrid::Impl {
   /// line relaxation in one dimension, their init_line/solve_line). Point distributive Jacobi
   /// leaves complex modes of |λ| ≈ 0.6 in the contact, the line removes them (eighth session).
   /// Where a run's LU fails or its change is not finite, the point changes stay.
+  /// Nodes that stay at zero (stays_at_zero) are in no line: a cavitated node's residual is
+  /// its complementarity slack, not an error, and solved with the line its (clipped) change
+  /// skews its pressurised neighbours' (twelfth session: (200, 0) on 1025 nodes stalled at a
+  /// force balance of 2e-6 with the last pressurised node's residual at 1e-2).
   void solve_jacobi_lines(const Level& l, const ReynoldsCoefficients& c, const std::vector<char>& is_jacobi,
                           const std::vector<double>& residual, std::vector<double>& change) const;
+
+  /// Node i stays at zero in a sweep: held by the coarse grid's truncation, or cavitated
+  /// with a residual r_i of the sign that keeps it there (r_i/∂L_i/∂P_i ≤ 0, the rule of the
+  /// coarsest grid's Newton step, coarsest_solve.cpp).
+  [[nodiscard]] static bool stays_at_zero(const Level& l, std::size_t i, double r, double derivative);
 
   /// ∂L_i/∂P_i with the piezoviscous response of ε_i: ½(dε_i/dP)(P_{i−1} − 2P_i + P_{i+1})/h²
   /// (faces by the mean of the nodes), where it keeps the derivative negative; at the
@@ -227,6 +244,11 @@ class FasMultigrid::Impl {
   /// Newton steps. Leaves the film and coefficients of the current P.
   [[nodiscard]] double coarsest_merit(Level& l);
 
+  /// The residuals of the coarsest grid's Newton step and merit: zero on the nodes held at
+  /// zero (Level::cavitated_on_finer), which the step's cavitation rule then keeps at zero
+  /// and the merit does not count.
+  [[nodiscard]] std::vector<double> coarsest_residuals(const Level& l) const;
+
   /// The start on the coarsest grid: the Hertzian guess, then Newton in (P, H0) through a
   /// homotopy in the piezoviscous exponent (η̄^s, s from 0 to 1 in steps that raise ln η̄ at
   /// the Hertz pressure by at most 2), so that the first solve is isoviscous and each next
@@ -243,15 +265,14 @@ class FasMultigrid::Impl {
   /// the local treatments of the spike and the free boundary.
   void cycle(std::size_t k);
 
-  /// Correction by linear interpolation, applied only inside the pressurised zone: not on
-  /// cavitated nodes nor next to them, and not on the last free_boundary_nodes pressurised
-  /// nodes, where the free boundary is the fine grid's to place (eighth session); each
-  /// change limited like a relaxation change.
+  /// Correction by linear interpolation, applied only inside the pressurised zone (not on
+  /// cavitated nodes nor next to them); each change limited like a relaxation change.
   void correct(const Level& coarse, const std::vector<double>& injected, Level& fine) const;
 
   /// FAS coarse problem: injected pressure and film, the coarse grid's own (live)
   /// coefficients, f_c = L_c(P̄) + R·r (full weighting; no residual where the fine pressure
-  /// is cavitated), g_c = ∫P̄ + (g − ∫P).
+  /// is cavitated), g_c = ∫P̄ + (g − ∫P); coarse nodes whose fine node is cavitated are held
+  /// at zero (Level::cavitated_on_finer).
   void restrict_problem(Level& fine, Level& coarse);
 
   /// Full multigrid: each level's solution, interpolated, starts the next, which gets one

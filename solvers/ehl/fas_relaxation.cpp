@@ -35,6 +35,7 @@ void FasMultigrid::Impl::relax(Level& l, std::size_t first, std::size_t end, con
     if (poiseuille_dominates(l, c, i)) continue;
     const double r = l.f[i] - operator_at(l, i);
     const double derivative = c.jacobian(i, i) - 0.5 * (c.jacobian(i, i - 1) + c.jacobian(i, i + 1));
+    if (stays_at_zero(l, i, r, derivative)) continue;
     jacobi_change[i] = limit_change(l, i, o_.omega_jacobi * r / derivative);
     jacobi_residual[i] = r;
     is_jacobi[i] = 1;
@@ -43,8 +44,8 @@ void FasMultigrid::Impl::relax(Level& l, std::size_t first, std::size_t end, con
   for (std::size_t i = 1; i + 1 < l.n; ++i) {
     if (jacobi_change[i] == 0.0) continue;
     l.P[i] += jacobi_change[i];
-    if (i > 1) l.P[i - 1] -= 0.5 * jacobi_change[i];
-    if (i + 2 < l.n) l.P[i + 1] -= 0.5 * jacobi_change[i];
+    if (i > 1 && !l.cavitated_on_finer[i - 1]) l.P[i - 1] -= 0.5 * jacobi_change[i];
+    if (i + 2 < l.n && !l.cavitated_on_finer[i + 1]) l.P[i + 1] -= 0.5 * jacobi_change[i];
   }
   for (auto& p : l.P) p = std::max(p, 0.0);
   l.P.front() = l.P.back() = 0.0;
@@ -52,7 +53,7 @@ void FasMultigrid::Impl::relax(Level& l, std::size_t first, std::size_t end, con
   // Gauss–Seidel nodes after the Jacobi lines, so that they see (and answer) the lines'
   // distributed changes and film.
   for (std::size_t i = first; i < end; ++i) {
-    if (is_jacobi[i]) continue;
+    if (is_jacobi[i] || l.cavitated_on_finer[i]) continue;
     const double r = l.f[i] - operator_at(l, i);
     const double old = l.P[i];
     l.P[i] = std::max(0.0, old + limit_change(l, i, o_.omega_gauss_seidel * r / gauss_seidel_derivative(c, i)));
@@ -100,6 +101,10 @@ void FasMultigrid::Impl::solve_jacobi_lines(const Level& l, const ReynoldsCoeffi
     }
     i = b + 1;
   }
+}
+
+bool FasMultigrid::Impl::stays_at_zero(const Level& l, std::size_t i, double r, double derivative) {
+  return l.cavitated_on_finer[i] || (l.P[i] <= 0.0 && r / derivative <= 0.0);
 }
 
 double FasMultigrid::Impl::gauss_seidel_derivative(const ReynoldsCoefficients& c, std::size_t i) {

@@ -41,8 +41,6 @@ void EhlOptions::validate() const {
   require(change_limit > 0.0 && change_limit <= 10.0, "change_limit", fmt::format("{}", change_limit),
           "range is (0, 10]");
   require(spike_window >= 1 && spike_window <= 32, "spike_window", std::to_string(spike_window), "range is [1, 32]");
-  require(free_boundary_nodes >= 0 && free_boundary_nodes <= 64, "free_boundary_nodes",
-          std::to_string(free_boundary_nodes), "range is [0, 64]");
   require(free_boundary_sweeps >= 0 && free_boundary_sweeps <= 20, "free_boundary_sweeps",
           std::to_string(free_boundary_sweeps), "range is [0, 20]");
   require(free_boundary_window >= 1 && free_boundary_window <= 256, "free_boundary_window",

@@ -70,9 +70,6 @@ struct EhlOptions {
   /// Nodes either side of the pressure spike solved by local Newton after post-smoothing
   /// and after each FMG interpolation: ±2 and ±4 measured alike, ±4 kept (eighth session).  [1, 32]
   int spike_window = 4;
-  /// Pressurised nodes next to the outlet that get no coarse-grid correction (the free
-  /// boundary is the fine grid's to place; eighth session).                           [0, 64]
-  int free_boundary_nodes = 4;
   /// Extra sweeps over the last free_boundary_window pressurised nodes after each cycle:
   /// 4 over 16 ended the period-2 oscillation at (20, 10) on 4097 nodes (eighth session).
   int free_boundary_sweeps = 4;   ///<                                                  [0, 20]

@@ -1,3 +1,5 @@
+#include <cstdio>
+#include <cstdlib>
 #include "thermal_line_contact.h"
 
 #include <algorithm>
@@ -135,6 +137,7 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
     change_before = change;
     r.temperature_change_history.push_back(change);
     r.h_min_history.push_back(next.h_min);
+    if (getenv("DBGT")) fprintf(stderr, "it %d: change %.3e rel %.3g, pressure conv %d cycles %d res %.3e factor %.3f h_min %.6e\n", it, change, relaxation, next.converged, next.cycles, next.residual_history.empty() ? -1.0 : next.residual_history.back(), next.convergence_factor, next.h_min);
     current = std::move(next);
     if (!std::isfinite(current.h_min) || current.residual_history.empty() ||
         !std::isfinite(current.residual_history.back()))
