@@ -109,27 +109,38 @@ const bool order_checks = [] {
   return true;
 }();
 
-// Venner & Lubrecht's line-contact multigrid reaches 0.1–0.2 a cycle; this W(2,1) design reaches
-// 0.35–0.38 on 513–2049 nodes and 0.25 on 4097–8193 at (10, 0) (eleventh session,
-// docs/ehl-model.md): the gap is a finding, recorded, not a pass.
+constexpr Point factor_points[] = {{10, 0}, {20, 10}, {2, 10}, {1, 0}};
+
+// Venner & Lubrecht's line-contact multigrid reaches 0.1–0.2 a cycle. This W(2,1) design read
+// 0.23–0.38 while the coarse grids could flip the free boundary (eleventh session); with the
+// coarse nodes held at zero where the fine grid cavitates, 0.04–0.14 at these points on 2049
+// nodes (twelfth session, docs/ehl-model.md).
 const RegisterCheck smoothing(CheckSpec{
     .id = "ehl.multigrid.convergence_factor", .section = section, .solver = solver,
     .reference = "Venner & Lubrecht 2000: 0.1–0.2 per cycle with their line-contact smoother",
-    .quantity = "mean per-cycle factor of the scaled residual, M = 10, L = 0, 2049 nodes, to 1e-9",
-    .unit = "-", .tolerance = {0.05, 0},
-    .justification = "their band 0.15 ± 0.05; missed today: the W(2,1) design's factor is set by its limited "
-                     "changes and local treatments, not yet analysed mode by mode",
+    .quantity = "worst mean per-cycle factor of the scaled residual at (M, L) = (10, 0), (20, 10), (2, 10), (1, 0), "
+                "2049 nodes, to 1e-9",
+    .unit = "-", .tolerance = {0.1, 0},
+    .justification = "their band's top, 0.2, or better: 0.1 ± 0.1; a factor above 0.2 is a multigrid that lost "
+                     "part of its coarse-grid correction (0.69 at (2, 10) when the coarse free boundary flipped)",
     .tier = Tier::fast, .run = [](const CheckContext&) {
-      const LineContactProblem p(LineContactData::from_moes(10.0, 0.0));
-      EhlOptions o;
-      o.nodes = 2049;
-      o.stop = StopRule::residual;
-      o.tolerance = 1e-9;
-      const auto r = LineContactSolver(p, o).solve();
-      return CheckValue{r.convergence_factor, 0.15,
-                        {{"cycles", r.cycles}, {"work_units", r.work_units}, {"residuals", r.residual_history}}};
-    },
-    .recorded = 0.354, .recorded_tolerance = 0.05});
+      double worst = 0.0;
+      nlohmann::json points = nlohmann::json::array(), factors = nlohmann::json::array(),
+                     work = nlohmann::json::array();
+      for (const auto& pt : factor_points) {
+        const LineContactProblem p(LineContactData::from_moes(pt.M, pt.L));
+        EhlOptions o;
+        o.nodes = 2049;
+        o.stop = StopRule::residual;
+        o.tolerance = 1e-9;
+        const auto r = LineContactSolver(p, o).solve();
+        worst = std::max(worst, r.convergence_factor);
+        points.push_back({pt.M, pt.L});
+        factors.push_back(r.convergence_factor);
+        work.push_back(r.work_units);
+      }
+      return CheckValue{worst, 0.1, {{"M_L", points}, {"factors", factors}, {"work_units", work}}};
+    }});
 
 }  // namespace
 
