@@ -29,10 +29,10 @@ struct GeometryOutput {
   int profile_points = 51;
   static const model::OptionTable<GeometryOutput>& table() {
     static const auto t = [] {
-      model::OptionTable<GeometryOutput> t;
-      t.integer("profile_points", &GeometryOutput::profile_points, 3, 100001,
+      model::OptionTable<GeometryOutput> table;
+      table.integer("profile_points", &GeometryOutput::profile_points, 3, 100001,
                 {.description = "points of the profiles along the path of contact (and along each contact line)"});
-      return t;
+      return table;
     }();
     return t;
   }

@@ -11,19 +11,19 @@ namespace gearbench::efficiency {
 
 const model::OptionTable<SweepSpec>& SweepSpec::table() {
   static const auto t = [] {
-    model::OptionTable<SweepSpec> t;
-    t.number("torque_Nm", &SweepSpec::torques_Nm, model::Range{0.0, 1e9, true, false},
+    model::OptionTable<SweepSpec> table;
+    table.number("torque_Nm", &SweepSpec::torques_Nm, model::Range{0.0, 1e9, true, false},
              {.description = "pinion torques to run, one at a time", .unit = "N*m"});
-    t.number("speed_rpm", &SweepSpec::speeds_rpm, model::Range{0.0, 1e6, true, false},
+    table.number("speed_rpm", &SweepSpec::speeds_rpm, model::Range{0.0, 1e6, true, false},
              {.description = "pinion speeds to run, one at a time", .unit = "rpm"});
-    t.number("pressure_angle_deg", &SweepSpec::pressure_angles_deg, model::Range{10.0, 40.0, true, false},
+    table.number("pressure_angle_deg", &SweepSpec::pressure_angles_deg, model::Range{10.0, 40.0, true, false},
              {.description = "normal pressure angles to run, one at a time", .unit = "deg"});
-    t.rule([](const SweepSpec& s, const std::string& prefix) {
+    table.rule([](const SweepSpec& s, const std::string& prefix) {
       if (s.torques_Nm.empty() && s.speeds_rpm.empty() && s.pressure_angles_deg.empty())
         throw InputError(prefix.substr(0, prefix.size() - 1) +
                          ": give at least one of torque_Nm, speed_rpm, pressure_angle_deg");
     });
-    return t;
+    return table;
   }();
   return t;
 }
