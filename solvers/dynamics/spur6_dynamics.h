@@ -90,6 +90,7 @@ struct Spur6Result {
 
 class Spur6Dynamics final : public DynamicsModel {
  public:
+  /// Keeps a reference to `geometry`, which must outlive this object.
   Spur6Dynamics(const geometry::GearPairGeometry& geometry, const std::array<model::Material, 2>& materials,
                 const model::OperatingPoint& operating, Spur6Options options);
 

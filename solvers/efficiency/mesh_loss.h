@@ -94,6 +94,7 @@ struct MeshLossMedia {
 
 class MeshLoss {
  public:
+  /// Keeps a reference to `geometry`, which must outlive this object.
   MeshLoss(const geometry::GearPairGeometry& geometry, const model::OperatingPoint& operating,
            MeshLossOptions options, MeshLossMedia media = {});
   ~MeshLoss();

@@ -56,6 +56,7 @@ class OilFilmStiffness {
  public:
   /// `fluid` supplies η0, α (or z), the rheology models and E′; radius, load and speeds come
   /// from the gears at each position.
+  /// Keeps a reference to `geometry`, which must outlive this object.
   OilFilmStiffness(const geometry::GearPairGeometry& geometry, const std::array<model::Material, 2>& materials,
                    const model::OperatingPoint& operating, const LineContactData& fluid,
                    OilFilmStiffnessOptions options);
@@ -118,6 +119,7 @@ struct MeshPeriodOilFilmResult {
 class MeshPeriodOilFilm {
  public:
   /// `fluid` supplies η0, α (or z), the rheology models and E′.
+  /// Keeps a reference to `pair`, which must outlive this object.
   MeshPeriodOilFilm(const geometry::DoubleInvolutePair& pair, const model::OperatingPoint& operating,
                     const LineContactData& fluid, MeshPeriodOilFilmOptions options);
   /// Throws ConvergenceError naming the position whose EHL solve did not converge.

@@ -37,6 +37,7 @@ struct ThermalPathResult {
 
 class ThermalMeshPath {
  public:
+  /// Keeps references to `geometry` and `rheology`, which must outlive this object.
   ThermalMeshPath(const geometry::GearPairGeometry& geometry, const model::OperatingPoint& operating,
                   const std::array<model::Material, 2>& materials, const lubricant::ThermalRheology& rheology,
                   const model::ThermalSolids& solids, model::LoadFactors factors, std::string load_sharing,

@@ -81,6 +81,7 @@ class TransientMeshEhl {
  public:
   /// `lubricant` supplies η0, α (or z), the viscosity and density models and E′; its radius,
   /// load and speeds are replaced by the pitch-point values from the gears and `operating`.
+  /// Keeps a reference to `geometry`, which must outlive this object.
   TransientMeshEhl(const geometry::GearPairGeometry& geometry, const model::OperatingPoint& operating,
                    const LineContactData& lubricant, TransientMeshOptions options);
   /// Marches from A to E. An unconverged step stops the march; the result then has

@@ -96,6 +96,7 @@ class DoubleInvolutePair {
   /// Throws InputError naming the rack key for a profile that cannot be built (waist
   /// depths out of order or below B, an overhanging waist arc), a pointed tip, an empty
   /// zone, or a mesh period with no pair in contact.
+  /// Keeps a reference to `geometry`, which must outlive this object.
   DoubleInvolutePair(const GearPairGeometry& geometry, const model::DoubleInvoluteRack& rack);
 
   [[nodiscard]] const GearPairGeometry& geometry() const { return geometry_; }

@@ -72,7 +72,8 @@ std::string shown_value(const nlohmann::json& value);
 
 class ObjectReader {
  public:
-  /// `path` is the key path of this object ("" for the root).
+  /// `path` is the key path of this object ("" for the root). Keeps a reference to `object`,
+  /// which must outlive the reader.
   ObjectReader(const nlohmann::json& object, std::string path);
 
   [[nodiscard]] bool has(const std::string& key);

@@ -68,6 +68,7 @@ struct MeshStiffnessResult {
 
 class MeshStiffness {
  public:
+  /// Keeps a reference to `geometry`, which must outlive this object.
   MeshStiffness(const geometry::GearPairGeometry& geometry,
                 const std::array<model::Material, 2>& materials, MeshStiffnessOptions options);
 

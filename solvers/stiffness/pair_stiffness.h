@@ -30,6 +30,7 @@ struct PairCompliance {
 
 class PairStiffness {
  public:
+  /// Keeps a reference to `geometry`, which must outlive this object.
   PairStiffness(const geometry::GearPairGeometry& geometry, const std::array<model::Material, 2>& materials,
                 ToothModel tooth_model, const std::array<double, 2>& bore_radii,
                 const std::optional<GearCrack>& crack, bool with_foundation);
@@ -65,6 +66,7 @@ class PairStiffness {
 /// all teeth healthy): the geometry's load-sharing hook filled by the energy method.
 class StiffnessLoadSharing final : public geometry::LoadSharing {
  public:
+  /// Keeps a reference to `pair`, which must outlive this object.
   explicit StiffnessLoadSharing(const PairStiffness& pair) : pair_(pair) {}
   [[nodiscard]] double share(const geometry::GearPairGeometry& g, double s) const override;
   [[nodiscard]] std::string name() const override { return "stiffness"; }
