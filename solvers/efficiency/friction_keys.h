@@ -25,6 +25,7 @@ inline std::string friction_law_text(lubricant::FrictionModel m) {
     case FrictionModel::iso14179: return "ISO/TR 14179-2";
     case FrictionModel::mixed: return "the mixed law of seed 000";
     case FrictionModel::ehl: return "the isothermal EHL solver with Eyring traction";
+    case FrictionModel::ehl_thermal: return "the thermal EHL solver with a Ree-Eyring film (tau0 from the lubricant)";
   }
   return lubricant::friction_model_name(m);
 }

@@ -57,7 +57,7 @@ MeshLoss::MeshLoss(const geometry::GearPairGeometry& geometry, const model::Oper
   const auto model_name = "friction.model = " + lubricant::friction_model_name(options_.friction_model);
   if (options_.friction_model != FrictionModel::constant) require_media(media_.lubricant.has_value(), "lubricant", model_name);
   if (options_.friction_model == FrictionModel::xu_kahraman || options_.friction_model == FrictionModel::mixed ||
-      options_.friction_model == FrictionModel::ehl)
+      lubricant::solved_by_ehl(options_.friction_model))
     require_media(media_.materials.has_value(), "materials", model_name + " (Hertz pressure, film)");
   if (options_.load_sharing == "stiffness") {
     require_media(media_.materials.has_value(), "materials", "load_sharing = stiffness");
@@ -71,9 +71,14 @@ MeshLoss::MeshLoss(const geometry::GearPairGeometry& geometry, const model::Oper
   if (media_.materials) reduced_modulus_ = model::reduced_modulus(*media_.materials);
   cos_alpha_wt_ = std::cos(geometry_.working_pressure_angle());
   if (options_.friction_model == FrictionModel::iso14179) iso_mu_ = iso14179_coefficient();
-  if (options_.friction_model == FrictionModel::ehl)
-    ehl_friction_ = std::make_unique<EhlFriction>(ehl::LineContactData::from_gear_media(*media_.materials, *media_.lubricant),
-                                                  *options_.eyring_stress);
+  if (lubricant::solved_by_ehl(options_.friction_model)) {
+    const auto fluid = ehl::LineContactData::from_gear_media(*media_.materials, *media_.lubricant);
+    if (options_.friction_model == FrictionModel::ehl)
+      ehl_friction_ = std::make_unique<EhlFriction>(fluid, *options_.eyring_stress);
+    else
+      ehl_friction_ = std::make_unique<EhlFriction>(
+          fluid, thermal_friction_media(*media_.materials, *media_.lubricant, operating_.oil_temperature));
+  }
 }
 
 int MeshLoss::ehl_solves() const { return ehl_friction_ ? ehl_friction_->solves() : 0; }
@@ -97,7 +102,7 @@ double MeshLoss::iso14179_coefficient() const {
 }
 
 double MeshLoss::friction(const lubricant::ContactState& c) const {
-  if (options_.friction_model == FrictionModel::ehl) return ehl_friction_->coefficient(c);
+  if (ehl_friction_) return ehl_friction_->coefficient(c);
   return lubricant::friction_coefficient(
       {options_.friction_model, options_.friction_coefficient, options_.boundary_friction,
        lubricant::composite_rms_roughness(operating_.roughness_Ra[0], operating_.roughness_Ra[1]), iso_mu_},

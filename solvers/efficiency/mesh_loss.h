@@ -39,7 +39,8 @@ struct MeshLossOptions {
   double friction_coefficient = 0.05;  ///< constant μ ("friction.mu")
   double boundary_friction = 0.1;      ///< μ_BL of the mixed law, seed 000: 0.07–0.15
   double lubricant_factor = 1.0;       ///< X_L of ISO/TR 14179-2 (mineral oil 1)
-  std::optional<double> eyring_stress; ///< τ0 [Pa] of the "ehl" law (required there, refused elsewhere)
+  std::optional<double> eyring_stress; ///< τ0 [Pa] of the "ehl" law (required there, refused elsewhere;
+                                       ///< "ehl_thermal" takes lubricant.eyring_stress_MPa, the film's τ0)
   /// Rolling loss of seed 004 eq. 9, P_r = C_r·h_min·ū·l·cos α_wt per contact [W]. Eq. 9
   /// prints 9·h·u_r·l·cos φ × 10⁻³ [kW] without units. Two readings (see rolling_loss_note
   /// in the .cpp): (a) h in µm, u_r in m/s, l in mm, literally as printed: C_r = 9e9 Pa;
@@ -108,7 +109,7 @@ class MeshLoss {
   [[nodiscard]] double sliding_loss(double s0) const { return loss_at(s0).sliding; }
   /// The ISO/TR 14179-2 mean coefficient of this pair (needs lubricant data and Ra > 0).
   [[nodiscard]] double iso14179_coefficient() const;
-  /// Contact points solved by the "ehl" law so far (0 for the other laws).
+  /// Contact points solved by the "ehl" or "ehl_thermal" law so far (0 for the other laws).
   [[nodiscard]] int ehl_solves() const;
 
  private:
@@ -125,7 +126,7 @@ class MeshLoss {
   MeshLossMedia media_;
   std::unique_ptr<stiffness::PairStiffness> pair_stiffness_;  ///< stiffness sharing only
   std::unique_ptr<geometry::LoadSharing> sharing_;
-  std::unique_ptr<EhlFriction> ehl_friction_;  ///< the "ehl" law only
+  std::unique_ptr<EhlFriction> ehl_friction_;  ///< the "ehl" and "ehl_thermal" laws only
   double reduced_modulus_ = 0.0;
   double iso_mu_ = 0.0;            ///< ISO/TR 14179-2 μ_mZ when that law is chosen
   double cos_alpha_wt_ = 1.0;

@@ -1,6 +1,7 @@
 // The case keys of the mesh-loss solver (issue 21: one table per Options).
 #include <fmt/format.h>
 
+#include "ehl_friction.h"
 #include "friction_keys.h"
 #include "mesh_loss.h"
 #include "model/errors.h"
@@ -14,8 +15,9 @@ using model::Range;
 model::OptionTable<MeshLossOptions> make_friction_table() {
   model::OptionTable<MeshLossOptions> t;
   add_friction_keys(t, {FrictionModel::constant, FrictionModel::xu_kahraman, FrictionModel::benedict_kelley,
-                        FrictionModel::iso14179, FrictionModel::mixed, FrictionModel::ehl});
-  t.number("eyring_stress_MPa", &MeshLossOptions::eyring_stress, Range{0.0, 1e3, true, false},
+                        FrictionModel::iso14179, FrictionModel::mixed, FrictionModel::ehl,
+                        FrictionModel::ehl_thermal});
+  t.number("eyring_stress_MPa", &MeshLossOptions::eyring_stress, EhlFriction::eyring_stress_range(),
            {.description = "Eyring stress tau0 of the \"ehl\" law; required there, refused elsewhere", .unit = "MPa",
             .scale = 1e6});
   t.rule([](const MeshLossOptions& o, const std::string& prefix) {
@@ -23,7 +25,10 @@ model::OptionTable<MeshLossOptions> make_friction_table() {
     if (ehl && !o.eyring_stress)
       throw InputError(prefix + "eyring_stress_MPa: missing, required by friction.model = \"ehl\"");
     if (!ehl && o.eyring_stress)
-      throw InputError(prefix + "eyring_stress_MPa: applies to friction.model = \"ehl\" only");
+      throw InputError(prefix + "eyring_stress_MPa: applies to friction.model = \"ehl\" only" +
+                       (o.friction_model == FrictionModel::ehl_thermal
+                            ? std::string(" (the \"ehl_thermal\" film takes its tau0 from lubricant.eyring_stress_MPa)")
+                            : std::string()));
   });
   return t;
 }

@@ -122,18 +122,20 @@ double friction_coefficient(const FrictionLaw& law, const ContactState& c) {
       const double share = law.composite_roughness > 0.0 ? fluid_load_share(c.film_thickness / law.composite_roughness) : 1.0;
       return mixed_friction(share, xu_kahraman(XuKahramanInputs::from_si(c)), law.boundary_mu);
     }
-    case FrictionModel::ehl: break;
+    case FrictionModel::ehl:
+    case FrictionModel::ehl_thermal: break;
   }
-  throw InputError("friction.model = \"ehl\": no closed-form coefficient; allowed are \"constant\", \"xu_kahraman\", "
-                   "\"benedict_kelley\", \"iso14179\", \"mixed\"");
+  throw InputError(fmt::format("friction.model = \"{}\": no closed-form coefficient; allowed are \"constant\", "
+                               "\"xu_kahraman\", \"benedict_kelley\", \"iso14179\", \"mixed\"",
+                               friction_model_name(law.model)));
 }
 
 FrictionModel parse_friction_model(const std::string& name, const std::string& key) {
   for (const auto m : {FrictionModel::constant, FrictionModel::xu_kahraman, FrictionModel::benedict_kelley,
-                       FrictionModel::iso14179, FrictionModel::mixed, FrictionModel::ehl})
+                       FrictionModel::iso14179, FrictionModel::mixed, FrictionModel::ehl, FrictionModel::ehl_thermal})
     if (friction_model_name(m) == name) return m;
   throw InputError(fmt::format("{} = \"{}\": allowed are \"constant\", \"xu_kahraman\", \"benedict_kelley\", "
-                               "\"iso14179\", \"mixed\", \"ehl\"", key, name));
+                               "\"iso14179\", \"mixed\", \"ehl\", \"ehl_thermal\"", key, name));
 }
 
 std::string friction_model_name(FrictionModel model) {
@@ -144,6 +146,7 @@ std::string friction_model_name(FrictionModel model) {
     case FrictionModel::iso14179: return "iso14179";
     case FrictionModel::mixed: return "mixed";
     case FrictionModel::ehl: return "ehl";
+    case FrictionModel::ehl_thermal: return "ehl_thermal";
   }
   return "constant";
 }

@@ -109,9 +109,12 @@ double mixed_friction(double fluid_share, double mu_full_film, double mu_boundar
 
 // --- Selection ---------------------------------------------------------------------------
 
-enum class FrictionModel { constant, xu_kahraman, benedict_kelley, iso14179, mixed, ehl };
+enum class FrictionModel { constant, xu_kahraman, benedict_kelley, iso14179, mixed, ehl, ehl_thermal };
 
-/// "constant" | "xu_kahraman" | "benedict_kelley" | "iso14179" | "mixed" | "ehl"; InputError
+/// The laws computed by an EHL solver at every contact (efficiency/ehl_friction.h), not by a closed form.
+inline bool solved_by_ehl(FrictionModel m) { return m == FrictionModel::ehl || m == FrictionModel::ehl_thermal; }
+
+/// "constant" | "xu_kahraman" | "benedict_kelley" | "iso14179" | "mixed" | "ehl" | "ehl_thermal"; InputError
 /// naming `key` otherwise.
 FrictionModel parse_friction_model(const std::string& name, const std::string& key);
 std::string friction_model_name(FrictionModel model);
@@ -127,7 +130,7 @@ struct FrictionLaw {
 
 /// μ of `law` at the contact `c` (the film thickness is read by the mixed law only; with
 /// σ = 0 the mixed law is the full-film Xu–Kahraman coefficient). InputError for the "ehl"
-/// model, which has no closed form.
+/// and "ehl_thermal" models, which have no closed form.
 double friction_coefficient(const FrictionLaw& law, const ContactState& c);
 
 }  // namespace gearbench::lubricant

@@ -120,6 +120,11 @@ OptionTable<Material> make_material_table() {
            {.description = "Poisson's ratio nu", .required = true});
   t.number("density_kg_m3", &Material::density, Range::closed(100.0, 1e5),
            {.description = "density (mass of the gear bodies)", .unit = "kg/m3"});
+  // The ranges of the thermal EHL kinds' "solids" (read_thermal_solids).
+  t.number("thermal_conductivity_W_per_mK", &Material::thermal_conductivity, Range::closed(0.1, 1e4),
+           {.description = "thermal conductivity of the gear body (friction.model \"ehl_thermal\")", .unit = "W/(m*K)"});
+  t.number("specific_heat_J_per_kgK", &Material::specific_heat, Range::closed(10.0, 1e5),
+           {.description = "specific heat of the gear body (friction.model \"ehl_thermal\")", .unit = "J/(kg*K)"});
   return t;
 }
 
@@ -156,6 +161,14 @@ OptionTable<Lubricant> make_lubricant_table() {
            {.description = "thermal conductivity", .unit = "W/(m*K)"});
   t.number("specific_heat_J_per_kgK", &Lubricant::specific_heat, Range::positive(1e6),
            {.description = "specific heat", .unit = "J/(kg*K)"});
+  // As the thermal EHL kinds' lubricant (read_thermal_lubricant).
+  t.number("temperature_viscosity_1_per_K", &Lubricant::temperature_viscosity, Range::closed(0.0, 1.0),
+           {.description = "viscosity-temperature coefficient beta of Roelands' temperature term (friction.model "
+                           "\"ehl_thermal\"; without it nu40_mm2_s and nu100_mm2_s give the Ubbelohde-Walther law)",
+            .unit = "1/K"});
+  t.number("eyring_stress_MPa", &Lubricant::eyring_stress, Range::positive(1e3),
+           {.description = "Eyring stress tau0 of the Ree-Eyring film (friction.model \"ehl_thermal\")", .unit = "MPa",
+            .scale = 1e6});
   t.after_read([](ObjectReader& s, const Lubricant& l) {
     if (l.nu40 && l.nu100 && *l.nu100 >= *l.nu40)
       throw InputError(s.key_path("nu100_mm2_s") + " = " + format_value(*l.nu100 * 1e6) +

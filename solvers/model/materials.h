@@ -9,6 +9,8 @@ struct Material {
   double youngs_modulus = 0.0;  ///< E [Pa]
   double poisson_ratio = 0.0;   ///< ν [-]
   double density = 7850.0;      ///< [kg/m³]; steel unless a case says otherwise
+  std::optional<double> thermal_conductivity;  ///< k_s [W/(m·K)], for thermal EHL (friction law "ehl_thermal")
+  std::optional<double> specific_heat;         ///< c_s [J/(kg·K)], for thermal EHL
 };
 
 /// E′ = 2/((1 − ν1²)/E1 + (1 − ν2²)/E2) [Pa], the plane-strain modulus of two bodies in
@@ -35,6 +37,8 @@ struct Lubricant {
   std::optional<double> nu100;                 ///< kinematic viscosity at 100 °C [m²/s]
   std::optional<double> thermal_conductivity;  ///< [W/(m·K)]
   std::optional<double> specific_heat;         ///< [J/(kg·K)]
+  std::optional<double> temperature_viscosity; ///< β [1/K] of Roelands' temperature term (thermal EHL)
+  std::optional<double> eyring_stress;         ///< τ0 [Pa] of a Ree–Eyring film (thermal EHL)
 };
 
 /// Load factors of ISO 6336-1 applied to the nominal tooth force (application, dynamic,
