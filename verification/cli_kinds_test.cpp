@@ -529,6 +529,31 @@ TEST(Cli, EfficiencyRunsAndValidates) {
   EXPECT_NE(h.err.find("load_sharing = \"iso\": helical pairs use a uniform load"), std::string::npos) << h.err;
 }
 
+// The thermal friction law in the dynamics kind (its dynamic_efficiency section, as the "ehl"
+// law): the seed 004 pair of cases/efficiency_seed004_ehl_thermal.json, two load levels and four
+// phases (about 15 s: each level is a mesh period of thermal EHL solves). A missing τ0 is bad
+// input before the run.
+TEST(Cli, DynamicsTakesTheThermalEhlLaw) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/efficiency_seed004_ehl_thermal.json");
+  const auto e = json::parse(in);
+  json c = {{"kind", "dynamics"}, {"model", "spur6"}, {"gear_pair", e["gear_pair"]}, {"materials", e["materials"]},
+            {"operating", e["operating"]}, {"lubricant", e["lubricant"]},
+            {"bearings", {{"stiffness_N_per_m", 1e8}, {"damping_N_s_per_m", 1e3}}}, {"friction", {{"mu", 0.06}}},
+            {"runup_cycles", 10}, {"record_cycles", 4}, {"samples_per_cycle", 32},
+            {"dynamic_efficiency", {{"friction", {{"model", "ehl_thermal"}}}, {"load_levels", 2}, {"phases", 4}}}};
+  const auto o = run_gearbench("run " + write_case("dynamics_ehl_thermal", c.dump()));
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto r = json::parse(o.out);
+  EXPECT_EQ(r["dynamic_efficiency"]["friction_model"], "ehl_thermal");
+  const double mean = r["dynamic_efficiency"]["mean"].get<double>();
+  EXPECT_TRUE(mean > 0.95 && mean < 1.0) << mean;
+  auto bad = c;
+  bad["lubricant"].erase("eyring_stress_MPa");
+  const auto b = run_gearbench("run " + write_case("dynamics_ehl_thermal_bad", bad.dump()));
+  EXPECT_EQ(b.exit_code, 2);
+  expect_one_error_line(b, "error: lubricant.eyring_stress_MPa: missing, required by friction.model = \"ehl_thermal\"");
+}
+
 // A loss above the input power is refused, naming the term out of its range (issue 20: a
 // 1000/1000-tooth pair returned efficiency_mean -2.24 with exit 0, from the rolling loss of
 // a 24 µm film).

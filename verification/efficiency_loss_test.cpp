@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "dynamics/spur6_dynamics.h"
@@ -191,6 +192,89 @@ TEST(EhlFriction, DefaultGridWithinOnePercentOfFourTimesFiner) {
     const double fine_mu = efficiency::EhlFriction(fluid, 5e6, fine).coefficient(c);
     EXPECT_NEAR(coarse_mu / fine_mu, 1.0, 0.01) << f;
   }
+}
+
+/// Seed 004's media with the thermal data of cases/efficiency_seed004_ehl_thermal.json (mineral
+/// oil ρ 870 kg/m³, k 0.14, c 2000, β 0.03 1/K, τ0 5 MPa; steel 46 W/(m·K), 470 J/(kg·K)).
+MeshLossMedia seed004_thermal_media() {
+  auto m = seed004_media();
+  m.lubricant->density = 870.0;
+  m.lubricant->thermal_conductivity = 0.14;
+  m.lubricant->specific_heat = 2000.0;
+  m.lubricant->temperature_viscosity = 0.03;
+  m.lubricant->eyring_stress = 5e6;
+  for (auto& steel : *m.materials) {
+    steel.thermal_conductivity = 46.0;
+    steel.specific_heat = 470.0;
+  }
+  return m;
+}
+
+// "ehl_thermal" names each piece of thermal data it lacks, and refuses the "ehl" law's τ0 key
+// (its film's τ0 is the lubricant's).
+TEST(MeshLoss, ThermalEhlLawNeedsItsData) {
+  const auto d = seed004_drive(false, 1000, 100);
+  const geometry::GearPairGeometry g(d.pair);
+  MeshLossOptions o;
+  o.friction_model = FrictionModel::ehl_thermal;
+  const auto error_without = [&](const std::function<void(MeshLossMedia&)>& edit) {
+    auto m = seed004_thermal_media();
+    edit(m);
+    return testing_support::input_error_of([&] { MeshLoss(g, d.op, o, m); });
+  };
+  EXPECT_NE(error_without([](auto& m) { m.lubricant->eyring_stress.reset(); }).find("lubricant.eyring_stress_MPa: missing"),
+            std::string::npos);
+  EXPECT_NE(error_without([](auto& m) { m.lubricant->density.reset(); }).find("lubricant.density_kg_m3: missing"),
+            std::string::npos);
+  EXPECT_NE(error_without([](auto& m) { m.lubricant->temperature_viscosity.reset(); })
+                .find("temperature_viscosity_1_per_K: missing"),
+            std::string::npos);
+  EXPECT_NE(error_without([](auto& m) { (*m.materials)[1].specific_heat.reset(); })
+                .find("materials.specific_heat_J_per_kgK (gear 2): missing"),
+            std::string::npos);
+  EXPECT_NE(error_without([](auto& m) { m.lubricant->roelands_z = 0.5; }).find("lubricant.roelands_z = 0.5"),
+            std::string::npos);
+  EXPECT_NE(error_without([](auto& m) { m.materials.reset(); }).find("materials: missing"), std::string::npos);
+  o.eyring_stress = 5e6;
+  EXPECT_NE(testing_support::input_error_of([&] { MeshLoss(g, d.op, o, seed004_thermal_media()); })
+                .find("lubricant.eyring_stress_MPa"),
+            std::string::npos);
+  // The "ehl" law's τ0 range, from the one model::Range of its key.
+  const auto fluid = ehl::LineContactData::from_gear_media(*seed004_media().materials, *seed004_media().lubricant);
+  EXPECT_NE(testing_support::input_error_of([&] { efficiency::EhlFriction(fluid, 2e9); })
+                .find("friction.eyring_stress_MPa = 2000: allowed range is (0, 1000] MPa"),
+            std::string::npos);
+}
+
+// A thermal contact that does not settle is a ConvergenceError naming the law and the contact
+// (exit 3 from the CLI), never a NaN in the loss; a settled one is remembered.
+TEST(EhlFriction, ThermalContactThatDoesNotSettleIsAnError) {
+  const auto d = seed004_drive(false, 1000, 100);
+  const geometry::GearPairGeometry g(d.pair);
+  const auto m = seed004_thermal_media();
+  const auto fluid = ehl::LineContactData::from_gear_media(*m.materials, *m.lubricant);
+  const auto media = efficiency::thermal_friction_media(*m.materials, *m.lubricant, d.op.oil_temperature);
+  const auto k = g.kinematics(g.path().A + 0.1 * (g.path().E - g.path().A), d.op.pinion_speed);
+  lubricant::ContactState c;
+  c.load_per_length = 0.5 * d.op.pinion_torque / g.radii(0).base / d.pair.face_width;
+  c.reduced_radius = k.reduced_radius;
+  c.u1 = k.u1;
+  c.u2 = k.u2;
+  auto once = efficiency::EhlFriction::default_thermal_options();
+  once.max_iterations = 1;
+  try {
+    (void)efficiency::EhlFriction(fluid, media, once).coefficient(c);
+    ADD_FAILURE() << "one thermal iteration reported as converged";
+  } catch (const ConvergenceError& e) {
+    EXPECT_NE(std::string(e.what()).find("friction.model = \"ehl_thermal\": the thermal EHL solve at w"),
+              std::string::npos)
+        << e.what();
+  }
+  const efficiency::EhlFriction law(fluid, media);
+  const double mu = law.coefficient(c);
+  EXPECT_TRUE(std::isfinite(mu) && mu > 0.0 && mu < 0.2) << mu;
+  EXPECT_EQ(law.coefficient(c), mu);
+  EXPECT_EQ(law.solves(), 1);
 }
 
 // A sweep reports one progress line per point, changes only its own parameter (the base
