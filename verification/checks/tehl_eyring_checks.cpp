@@ -134,6 +134,24 @@ const RegisterCheck stress_trends(CheckSpec{
 
 const std::vector<double> curve_srr{0.02, 0.1, 0.2, 0.4, 0.8, 1.5};
 
+struct TractionCurve {
+  std::vector<double> mu, dT;  ///< |μ| and the film's largest temperature rise [K] at curve_srr
+};
+
+/// The traction curve of the check and of the report's figure, solved once per process.
+const TractionCurve& traction_curve() {
+  static const TractionCurve curve = [] {
+    TractionCurve c;
+    for (double s : curve_srr) {
+      const auto r = solve({.srr = s, .nodes = 321});
+      c.mu.push_back(std::abs(r.friction_coefficient));
+      c.dT.push_back(r.temperature_rise_max);
+    }
+    return c;
+  }();
+  return curve;
+}
+
 const RegisterCheck traction_peak(CheckSpec{
     .id = "tehl.eyring.traction_curve_peak", .section = section, .solver = solver,
     .reference = "the shape of a thermal EHL traction curve (linear, non-linear and thermal regions: Johnson & "
@@ -146,18 +164,34 @@ const RegisterCheck traction_peak(CheckSpec{
                      "plus one if the peak sits at an end",
     .tier = Tier::fast,
     .run = [](const CheckContext&) {
-      std::vector<double> mu, dT;
-      for (double s : curve_srr) {
-        const auto r = solve({.srr = s, .nodes = 321});
-        mu.push_back(std::abs(r.friction_coefficient));
-        dT.push_back(r.temperature_rise_max);
-      }
+      const auto& [mu, dT] = traction_curve();
       const auto peak = static_cast<std::size_t>(std::max_element(mu.begin(), mu.end()) - mu.begin());
       int violations = (peak == 0 || peak + 1 == mu.size()) ? 1 : 0;
       for (std::size_t k = 1; k < mu.size(); ++k)
         if (k <= peak ? !(mu[k] > mu[k - 1]) : !(mu[k] < mu[k - 1])) ++violations;
       return CheckValue{static_cast<double>(violations), 0.0,
                         {{"srr", curve_srr}, {"mu", mu}, {"dT_K", dT}, {"peak_srr", curve_srr[peak]}}};
+    }});
+
+// The figure of the traction curve (issue 26 step 3): |μ| and the film's temperature rise
+// against SRR, the curve tehl.eyring.traction_curve_peak holds to a single interior maximum.
+const RegisterSection traction_curve_section(SectionSpec{
+    .id = "tehl_eyring_traction_curve", .tier = Tier::fast, .add = [](const CheckContext&, reports::Report& report) {
+      const auto& c = traction_curve();
+      const auto peak = static_cast<std::size_t>(std::max_element(c.mu.begin(), c.mu.end()) - c.mu.begin());
+      report.figures.push_back({"tehl_eyring_traction_curve", section,
+                                "Traction curve μ(SRR) of the thermal Ree–Eyring film (τ0 5 MPa, 300 kN/m, ū 2 m/s, "
+                                "321 nodes)",
+                                "slide-to-roll ratio SRR", "|μ|", {{"thermal, Ree–Eyring", curve_srr, c.mu}}});
+      report.figures.push_back({"tehl_eyring_traction_curve_temperature", section,
+                                "Largest film temperature rise along the traction curve", "slide-to-roll ratio SRR",
+                                "ΔT_max [K]", {{"thermal, Ree–Eyring", curve_srr, c.dT}}});
+      report.notes.push_back({section, fmt::format(
+          "Traction curve of the sliding contact (cases/tehl_point_sliding.json with a Ree–Eyring film, τ0 5 MPa): "
+          "|μ| rises through the linear and non-linear regions to {:.4f} at SRR {} and falls after it as the shear "
+          "heating thins the film's oil (film temperature rise {:.1f} K there, {:.1f} K at SRR {}); the check "
+          "tehl.eyring.traction_curve_peak holds the maximum to an interior point of SRR {} … {}.",
+          c.mu[peak], curve_srr[peak], c.dT[peak], c.dT.back(), curve_srr.back(), curve_srr.front(), curve_srr.back())});
     }});
 
 // ---- the issue's steel roller ------------------------------------------------------------
