@@ -6,7 +6,12 @@
 //    line × 20 points, mixed friction, against constant μ;
 //  - one contact's friction coefficient from the regression against the EHL solver's
 //    (BM_ContactFriction over BM_ContactFriction_baseline: regression time / EHL time, the
-//    saving that makes a regression usable inside the loss integral).
+//    saving that makes a regression usable inside the loss integral);
+//  - seed 004's path (cases/efficiency_seed004_ehl_thermal.json, 40 positions and the mean's
+//    Gauss points) with the thermal Ree–Eyring law "ehl_thermal" against the isothermal "ehl"
+//    law with the same τ0 (BM_EfficiencySeed004EhlThermal over its _baseline: the cost of the
+//    thermal film per path, measured in the same run). A fresh MeshLoss per iteration, so the
+//    laws' memory of solved contacts does not answer.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -16,6 +21,8 @@
 #include "efficiency/mesh_loss.h"
 #include "ehl/line_contact_solver.h"
 #include "lubricant/friction_laws.h"
+#include "model/case_reader.h"
+#include "model/json_reader.h"
 #include "support/test_support.h"
 
 namespace {
@@ -116,5 +123,42 @@ void BM_ContactFriction_baseline(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(efficiency::EhlFriction(s.data, 5e6).coefficient(s.state));
 }
 BENCHMARK(BM_ContactFriction_baseline)->Unit(benchmark::kMillisecond);
+
+/// The seed 004 case of the thermal law, read once.
+struct Seed004Thermal {
+  Seed004Thermal() {
+    const auto j = model::read_json_file(std::string(GEARBENCH_SOURCE_DIR) + "/cases/efficiency_seed004_ehl_thermal.json");
+    model::ObjectReader root(j, "");
+    c = model::read_gear_case(root);
+    efficiency::MeshLossOptions::table().read(root, options);
+  }
+  model::GearCase c;
+  efficiency::MeshLossOptions options;
+};
+
+void run_seed004_path(benchmark::State& state, lubricant::FrictionModel law) {
+  static const Seed004Thermal s;
+  const geometry::GearPairGeometry g(s.c.gear_pair);
+  auto o = s.options;
+  o.friction_model = law;
+  if (law == lubricant::FrictionModel::ehl) o.eyring_stress = s.c.lubricant->eyring_stress;
+  int solves = 0;
+  for (auto _ : state) {
+    const efficiency::MeshLoss loss(g, *s.c.operating, o, {s.c.materials, s.c.lubricant});
+    benchmark::DoNotOptimize(loss.solve().efficiency_min);
+    solves = loss.ehl_solves();
+  }
+  state.counters["contact_solves"] = solves;
+}
+
+void BM_EfficiencySeed004EhlThermal(benchmark::State& state) {
+  run_seed004_path(state, lubricant::FrictionModel::ehl_thermal);
+}
+BENCHMARK(BM_EfficiencySeed004EhlThermal)->Unit(benchmark::kSecond);
+
+void BM_EfficiencySeed004EhlThermal_baseline(benchmark::State& state) {
+  run_seed004_path(state, lubricant::FrictionModel::ehl);
+}
+BENCHMARK(BM_EfficiencySeed004EhlThermal_baseline)->Unit(benchmark::kSecond);
 
 }  // namespace
