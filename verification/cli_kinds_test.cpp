@@ -110,7 +110,7 @@ TEST(Cli, EhlLineBadInput) {
       {R"({"kind": "ehl_line", "moes": {"M": 20, "L": 10}, "grid": {"nodes": 641, "levels": 5}})",
        "grid.nodes: give either nodes or levels (with coarsest_nodes), not both"},
       {R"({"kind": "ehl_line", "moes": {"M": 20, "L": 10}, "grid": {"levels": 5}})",
-       "grid.levels: give coarsest_nodes with levels (or give nodes)"},
+       "grid.levels = 5: needs grid.coarsest_nodes in [9, 1025] (or give nodes instead)"},
       {R"({"kind": "ehl_line", "moes": {"M": 20, "L": 10}, "grid": {"relaxation": "newton"}})", "grid.relaxation"},
       {R"({"kind": "ehl_line", "contact": {"reduced_radius_m": 0.01, "load_per_length_N_per_m": 1e5,
           "surface_speeds_m_per_s": [1, 1], "reduced_modulus_Pa": 2.2e11},

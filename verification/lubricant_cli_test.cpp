@@ -19,10 +19,12 @@ json read_case(const std::string& name) {
   return json::parse(in);
 }
 
-/// The result without what legitimately differs between two runs (timings) and the echo.
+/// The result without what legitimately differs between two runs (timings, and the summary
+/// line that quotes them) and the echo.
 json comparable(json r) {
   if (r.is_object()) {
     r.erase("lubricant_resolved");
+    r.erase("summary");
     for (auto it = r.begin(); it != r.end();) {
       if (it.key().find("seconds") != std::string::npos) {
         it = r.erase(it);

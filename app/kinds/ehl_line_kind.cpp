@@ -1,11 +1,14 @@
 // Case kind "ehl_line": steady isothermal line-contact EHL by FAS multigrid, from
-// dimensional contact data or from Moes' (M, L).
+// dimensional contact data or from Moes' (M, L). Every key comes from a table (EhlLineCase,
+// ehl/ehl_tables.h, EhlOptions::table()).
 #include <cmath>
 #include <fmt/format.h>
 
+#include "ehl/ehl_tables.h"
 #include "ehl/line_contact_solver.h"
 #include "ehl_sections.h"
 #include "kind_registry.h"
+#include "lubricant/lubricant_section.h"
 #include "model/errors.h"
 #include "model/json_reader.h"
 
@@ -13,30 +16,42 @@ namespace gearbench::app {
 namespace {
 
 using nlohmann::json;
-using model::Range;
 
-ehl::LineContactData read_dimensional(model::ObjectReader& root) {
-  ehl::LineContactData d = read_line_contact(root);
-  auto l = root.object("lubricant");
-  d.viscosity = l.number("viscosity_Pa_s", Range::positive(1e4), "Pa*s");
-  d.pressure_viscosity = l.number("pressure_viscosity_1_per_GPa", Range::closed(0.0, 100.0), "1/GPa") * 1e-9;
-  d.viscosity_model = l.optional_string("viscosity_model", {"roelands", "barus"}).value_or("roelands") == "barus"
-                          ? ehl::ViscosityModel::barus : ehl::ViscosityModel::roelands;
-  d.density_model = l.optional_string("density_model", {"dowson_higginson", "incompressible"})
-                                .value_or("dowson_higginson") == "incompressible"
-                        ? ehl::DensityModel::incompressible : ehl::DensityModel::dowson_higginson;
-  d.roelands_z = l.optional_number("roelands_z", Range::positive(2.0)).value_or(0.0);
-  l.finish();
-  return d;
-}
+/// The keys of an ehl_line case: Moes' (M, L), or the dimensional contact and lubricant; the
+/// grid.
+struct EhlLineCase {
+  std::optional<ehl::MoesPoint> moes;
+  std::optional<ehl::ContactInput> contact;
+  std::optional<ehl::LineContactData> lubricant;  ///< the lubricant's keys (contact left empty)
+  ehl::EhlOptions grid;
 
-ehl::LineContactData read_moes(model::ObjectReader& root) {
-  auto m = root.object("moes");
-  const double M = m.number("M", {1e-3, 1e4});
-  const double L = m.number("L", {0.0, 100.0});
-  m.finish();
-  return ehl::LineContactData::from_moes(M, L);
-}
+  static const model::OptionTable<EhlLineCase>& table() {
+    static const auto table = [] {
+      model::OptionTable<EhlLineCase> t;
+      t.section("moes", &EhlLineCase::moes, ehl::MoesPoint::table(),
+                {.description = "Moes' dimensionless (M, L) instead of contact and lubricant (Barus viscosity, "
+                                "incompressible)"});
+      t.section("contact", &EhlLineCase::contact, ehl::ContactInput::table(),
+                {.description = "the dimensional contact (required without moes)"});
+      t.section("lubricant", &EhlLineCase::lubricant, ehl::line_lubricant_table(),
+                {.description = "the lubricant (required without moes)"}, lubricant::named_or_explicit_schema);
+      t.section("grid", &EhlLineCase::grid, ehl::EhlOptions::table(), {.description = "the EHL multigrid"});
+      t.after_read([](model::ObjectReader& root, const EhlLineCase& c) {
+        if (!c.moes && !c.contact) root.object("contact");  // missing required key
+        if (!c.moes && !c.lubricant) root.object("lubricant");
+      });
+      return t;
+    }();
+    return table;
+  }
+
+  [[nodiscard]] ehl::LineContactData data() const {
+    if (moes) return ehl::LineContactData::from_moes(moes->M, moes->L);
+    auto d = *lubricant;
+    contact->apply(d);
+    return d;
+  }
+};
 
 json result_json(const ehl::LineContactProblem& p, const ehl::EhlResult& r) {
   const auto& d = p.data();
@@ -81,16 +96,23 @@ json run_ehl_line(const json& case_json) {
   model::ObjectReader root(case_json, "");
   root.string("kind");
   root.optional_string("description");
-  const bool moes = root.has("moes");
-  if (moes && (root.has("contact") || root.has("lubricant")))
+  if (root.has("moes") && (root.has("contact") || root.has("lubricant")))
     throw InputError("moes: give either \"moes\" or \"contact\" + \"lubricant\", not both");
-  auto data = moes ? read_moes(root) : read_dimensional(root);
-  const auto options = read_ehl_grid(root);
+  EhlLineCase k;
+  EhlLineCase::table().read(root, k);
   root.finish();
+  EhlLineCase::table().validate(k);
+  const bool moes = k.moes.has_value();
+  const auto data = k.data();
+  const auto& options = k.grid;
 
   const ehl::LineContactProblem problem(data);
   const auto r = ehl::LineContactSolver(problem, options).try_solve();
   auto out = result_json(problem, r);
+  out["converged"] = r.converged;
+  out["message"] = r.message;
+  out["summary"] = r.summary();
+  add_options_record(out, ehl::EhlOptions::table(), options, ehl::grid_used(options, r));
   json notes = json::array();
   if (moes)
     notes.push_back("Moes input: Barus viscosity and an incompressible lubricant (M and L fix neither p0 for "
@@ -115,7 +137,10 @@ json run_ehl_line(const json& case_json) {
   return out;
 }
 
-const RegisterKind ehl_line_kind({"ehl_line", "steady isothermal line-contact EHL (FAS multigrid)", run_ehl_line});
+std::vector<json> ehl_line_schema() { return {EhlLineCase::table().schema()}; }
+
+const RegisterKind ehl_line_kind({"ehl_line", "steady isothermal line-contact EHL (FAS multigrid)", run_ehl_line,
+                                  ehl_line_schema});
 
 }  // namespace
 }  // namespace gearbench::app

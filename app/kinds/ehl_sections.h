@@ -5,14 +5,14 @@
 #include <string>
 #include <vector>
 
+#include "ehl/ehl_tables.h"
 #include "ehl/line_contact_solver.h"
 #include "model/case_reader.h"
 #include "model/json_reader.h"
 
 namespace gearbench::app {
 
-/// The optional "grid" section: {"nodes" | "levels" + "coarsest_nodes", "x_in", "x_out",
-/// "cycle", "max_cycles", "tolerance"} over the given defaults.
+/// The optional "grid" section (EhlOptions::table()) over the given defaults.
 ehl::EhlOptions read_ehl_grid(model::ObjectReader& root, ehl::EhlOptions defaults = {});
 
 /// The dimensional "contact" section: {"reduced_radius_m", "load_per_length_N_per_m",
@@ -25,6 +25,13 @@ ehl::LineContactData read_line_contact(model::ObjectReader& root);
 /// "density_model"}. Radius, load and speeds are the mesh's; `kind` names the case kind in
 /// errors.
 ehl::LineContactData read_gear_fluid(model::ObjectReader& root, const model::GearCase& c, const std::string& kind);
+
+/// The options record of a solve: "options_given" and "options_used" in case keys.
+template <class O>
+void add_options_record(nlohmann::json& out, const model::OptionTable<O>& table, const O& given, const O& used) {
+  out["options_given"] = table.to_json(given);
+  out["options_used"] = table.to_json(used);
+}
 
 /// Non-finite numbers become null.
 nlohmann::json finite_or_null(double v);

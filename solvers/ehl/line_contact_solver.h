@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "line_contact_problem.h"
+#include "model/option_table.h"
 
 namespace gearbench::ehl {
 
@@ -32,8 +33,8 @@ enum class CycleType { V, W };
 /// residual tolerance (the users who want one; warm-started solves, which have no estimate).
 enum class StopRule { discretisation_error, residual };
 
-/// The options of the EHL multigrid: every key's default and allowed range is stated once,
-/// here, and checked by validate().
+/// The options of the EHL multigrid: every default is stated once, here; every range once, in
+/// table() (ehl_options.cpp), which validate() and the cases' "grid" section read.
 struct EhlOptions {
   int nodes = 0;                  ///< nodes on the finest grid (2^k·(n_0 − 1) + 1)  0 or [9, 1048577]
   int levels = 0;                 ///< grid levels from coarsest_nodes (not with nodes)  [0, 14]
@@ -77,7 +78,10 @@ struct EhlOptions {
   double x_in = 0.0, x_out = 0.0; ///< domain; both 0 picks the problem's default
   bool direct_deformation = false; ///< the O(n²) sum instead of the FFT (the benchmarks' baseline)
 
-  void validate() const;          ///< InputError naming the key and its range
+  /// The "grid" keys (ranges, units, what an absent key means) and the ranges of the
+  /// relaxation settings the C++ API alone sets.
+  static const model::OptionTable<EhlOptions>& table();
+  void validate() const;          ///< InputError naming the key ("grid.nodes"), the value and its range
   [[nodiscard]] bool adaptive() const { return levels == 0 && nodes == 0; }
   /// Nodes on the finest grid of a fixed grid (levels > 0).
   [[nodiscard]] long finest_nodes() const {

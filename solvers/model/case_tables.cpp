@@ -180,14 +180,6 @@ OptionTable<Lubricant> make_lubricant_table() {
 
 }  // namespace
 
-/// Each table is built once, on first use (the order of static initialisation across files
-/// is not ours to rely on).
-template <auto make>
-const auto& built_once() {
-  static const auto table = make();
-  return table;
-}
-
 const OptionTable<GearPair>& gear_pair_table() { return built_once<make_gear_pair_table>(); }
 const OptionTable<Material>& material_table() { return built_once<make_material_table>(); }
 const OptionTable<OperatingPoint>& operating_table() { return built_once<make_operating_table>(); }

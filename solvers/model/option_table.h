@@ -18,7 +18,8 @@
 
 namespace gearbench::model {
 
-/// How a key is shown and converted; SI value = case value × scale + offset (integers: + offset).
+/// How a key is shown and converted; SI value = case value × scale / divisor + offset (integers:
+/// + offset).
 struct KeySpec {
   std::string description;
   std::string unit;            ///< as the key's name spells it ("mm", "Pa"); "" for none
@@ -27,6 +28,12 @@ struct KeySpec {
   bool required = false;
   /// A default that depends on other keys, in words; the schema then gives none.
   std::string default_text = {};
+  /// The member's value (SI) that means "not given, the solver chooses" (EHL grid.nodes 0:
+  /// sized by the error target): valid beside the range, left out of the record, and no
+  /// schema default where the holder leaves it so.
+  std::optional<double> unset = {};
+  /// A unit given by its reciprocal, converted by division as the readers did (1/GPa: / 1e9).
+  double divisor = 1.0;
 };
 
 enum class KeyType { number, integer, boolean, choice, text, section, external };
@@ -75,16 +82,18 @@ class OptionTable {
     constexpr bool list = detail::is_list<V>::value;
     KeyInfo info{std::move(key), KeyType::number, pair ? Shape::pair : list ? Shape::list : Shape::scalar, range, {},
                  std::move(spec), {}};
-    const double scale = info.spec.scale, offset = info.spec.offset;
-    const auto to_case = [scale, offset](double si) { return (si - offset) / scale; };
-    const auto to_si = [scale, offset](double v) { return v * scale + offset; };
+    const double scale = info.spec.scale, offset = info.spec.offset, divisor = info.spec.divisor;
+    const auto to_case = [scale, offset, divisor](double si) { return (si - offset) * divisor / scale; };
+    const auto to_si = [scale, offset, divisor](double v) { return v * scale / divisor + offset; };
     Entry e{info};
-    e.get = [access, to_case](const O& o) -> nlohmann::json {
+    e.get = [access, to_case, unset = info.spec.unset](const O& o) -> nlohmann::json {
       const M& m = std::invoke(access, o);
       if constexpr (detail::is_optional<M>::value) {
         if (!m) return nullptr;
         return value_json(*m, to_case);
       } else {
+        if constexpr (std::is_same_v<M, double>)
+          if (unset && m == *unset) return nullptr;
         return value_json(m, to_case);
       }
     };
@@ -105,6 +114,8 @@ class OptionTable {
       if constexpr (detail::is_optional<M>::value) {
         if (m) check_range(*m, prefix + info.key, info, to_si);
       } else {
+        if constexpr (std::is_same_v<M, double>)
+          if (info.spec.unset && m == *info.spec.unset) return;
         check_range(m, prefix + info.key, info, to_si);
       }
     };
@@ -121,9 +132,10 @@ class OptionTable {
                  std::move(spec), {}};
     const int offset = static_cast<int>(info.spec.offset);
     Entry e{info};
-    e.get = [access, offset](const O& o) -> nlohmann::json {
+    e.get = [access, offset, unset = info.spec.unset](const O& o) -> nlohmann::json {
       const M& m = std::invoke(access, o);
       if constexpr (pair) return nlohmann::json::array({m[0] - offset, m[1] - offset});
+      else if (unset && m == *unset) return nullptr;
       else return m - offset;
     };
     e.read = [access, offset, lo, hi, key = info.key](ObjectReader& r, O& o) {
@@ -138,7 +150,7 @@ class OptionTable {
       const M& m = std::invoke(access, o);
       const auto to_si = [offset](double v) { return v + offset; };
       if constexpr (pair) check_range(std::array<double, 2>{double(m[0]), double(m[1])}, prefix + info.key, info, to_si);
-      else check_range(double(m), prefix + info.key, info, to_si);
+      else if (!(info.spec.unset && m == *info.spec.unset)) check_range(double(m), prefix + info.key, info, to_si);
     };
     entries_.push_back(std::move(e));
     return *this;
@@ -363,7 +375,10 @@ class OptionTable {
     const Range& r = *info.range;
     const Range si_range{to_si(r.lo), r.hi >= 1e299 ? r.hi : to_si(r.hi), r.lo_open, r.hi_open};
     if (!si_range.contains(si))
-      throw_range(key, (si - info.spec.offset) / (info.type == KeyType::integer ? 1.0 : info.spec.scale), info);
+      throw_range(key,
+                  info.type == KeyType::integer ? si - info.spec.offset
+                                                : (si - info.spec.offset) * info.spec.divisor / info.spec.scale,
+                  info);
   }
   template <class Values, class F>
   static void check_range(const Values& si, const std::string& key, const KeyInfo& info, const F& to_si) {
@@ -378,6 +393,14 @@ class OptionTable {
   std::vector<std::function<void(ObjectReader&, O&)>> after_read_;
   std::vector<std::function<void(const O&, const std::string&)>> rules_;
 };
+
+/// A table made by `make` on first use, once (the order of static initialisation across files
+/// is not ours to rely on).
+template <auto make>
+const auto& built_once() {
+  static const auto table = make();
+  return table;
+}
 
 /// Out of line so that every table throws the same InputError.
 [[noreturn]] void throw_option_range(const std::string& key, double value, const KeyInfo& info);
