@@ -1,4 +1,4 @@
-// The EHL kinds' sections, read by the tables of ehl/ehl_tables.h, and NaN-free JSON output.
+// The gear kinds' EHL fluid and NaN-free JSON output.
 #include "ehl_sections.h"
 
 #include <cmath>
@@ -45,18 +45,11 @@ ehl::LineContactData read_line_contact(model::ObjectReader& root) {
   input.apply(d);
   return d;
 }
-/// The lubricant and solids of the contact; radius, load and speeds come from the mesh.
-ehl::LineContactData read_gear_fluid(model::ObjectReader& root, const model::GearCase& c, const std::string& kind) {
+ehl::LineContactData gear_fluid(const model::GearCase& c, const std::string& kind) {
   if (!c.operating) throw InputError("operating: missing required key (kind " + kind + ")");
   if (!c.materials) throw InputError("materials: missing required key (kind " + kind + ")");
   if (!c.lubricant) throw InputError("lubricant: missing required key (kind " + kind + ")");
-  auto d = ehl::LineContactData::from_gear_media(*c.materials, *c.lubricant);
-  if (root.has("rheology")) {
-    auto r = root.object("rheology");
-    ehl::rheology_table().read(r, d);
-    r.finish();
-  }
-  return d;
+  return ehl::LineContactData::from_gear_media(*c.materials, *c.lubricant);
 }
 
 }  // namespace gearbench::app

@@ -1,6 +1,6 @@
 #pragma once
-// Case sections shared by the EHL kinds: the multigrid "grid" options and JSON output that
-// never holds NaN (diagnostics of a failed solve may).
+// Case sections shared by the EHL kinds (their keys are the tables' of ehl/ehl_tables.h and the
+// solvers' Options) and JSON output that never holds NaN (diagnostics of a failed solve may).
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -20,11 +20,36 @@ ehl::EhlOptions read_ehl_grid(model::ObjectReader& root, ehl::EhlOptions default
 ehl::LineContactData read_line_contact(model::ObjectReader& root);
 
 /// A gear-pair case's contact fluid and solids for EHL along the mesh (requires "operating",
-/// "materials" and "lubricant"): E′ from "materials",
-/// η0, α and z from "lubricant", the optional "rheology": {"viscosity_model",
-/// "density_model"}. Radius, load and speeds are the mesh's; `kind` names the case kind in
-/// errors.
-ehl::LineContactData read_gear_fluid(model::ObjectReader& root, const model::GearCase& c, const std::string& kind);
+/// "materials" and "lubricant"): E′ from "materials", η0, α and z from "lubricant"; the
+/// optional "rheology" section (add_rheology_section) is read over it. Radius, load and speeds
+/// are the mesh's; `kind` names the case kind in errors.
+ehl::LineContactData gear_fluid(const model::GearCase& c, const std::string& kind);
+
+/// The gear kinds' optional "rheology" section ({"viscosity_model", "density_model"}) into the
+/// member `fluid` of a case.
+template <class O>
+void add_rheology_section(model::OptionTable<O>& t) {
+  t.section("rheology", &O::fluid, ehl::rheology_table(),
+            {.description = "pressure-viscosity and pressure-density laws of the film"});
+}
+
+/// The keys of a gear kind that solves EHL along the mesh, beside the gear case: the solver's
+/// Options and the film's "rheology" over the case's fluid (gear_fluid).
+template <class Options>
+struct GearFluidCase {
+  Options options;
+  ehl::LineContactData fluid;
+
+  static const model::OptionTable<GearFluidCase>& table() {
+    static const auto table = [] {
+      model::OptionTable<GearFluidCase> t;
+      t.include(&GearFluidCase::options, Options::table());
+      add_rheology_section(t);
+      return t;
+    }();
+    return table;
+  }
+};
 
 /// The options record of a solve: "options_given" and "options_used" in case keys.
 template <class O>

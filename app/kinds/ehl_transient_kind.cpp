@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "case_schema.h"
 #include "ehl/transient_mesh_ehl.h"
 #include "ehl_sections.h"
 #include "kind_registry.h"
@@ -63,6 +64,10 @@ json result_json(const ehl::TransientMeshResult& r) {
   };
 }
 
+/// The keys of an ehl_transient case beside the gear pair, materials, operating point and
+/// lubricant: the solver's options and the film's rheology.
+using TransientCase = GearFluidCase<ehl::TransientMeshOptions>;
+
 /// The last entry of a history (0 for an empty one: the step failed before its first cycle).
 double last_or_zero(const std::vector<double>& v) { return v.empty() ? 0.0 : v.back(); }
 
@@ -71,16 +76,20 @@ json run_ehl_transient(const json& case_json) {
   root.string("kind");
   root.optional_string("description");
   const auto gear_case = model::read_gear_case(root);
-  const auto fluid = read_gear_fluid(root, gear_case, "ehl_transient");
-  ehl::TransientMeshOptions options;
-  options.steps = root.optional_integer("time_steps", 4, 100000).value_or(options.steps);
-  options.load_sharing = root.optional_string("load_sharing", {"equal", "iso"}).value_or(options.load_sharing);
-  options.grid = read_ehl_grid(root, options.grid);
+  TransientCase k;
+  k.fluid = gear_fluid(gear_case, "ehl_transient");
+  TransientCase::table().read(root, k);
   root.finish();
+  TransientCase::table().validate(k);
+  const auto& options = k.options;
+  const auto& fluid = k.fluid;
 
   const geometry::GearPairGeometry geometry(gear_case.gear_pair);
   const auto r = ehl::TransientMeshEhl(geometry, *gear_case.operating, fluid, options).run();
   auto out = result_json(r);
+  out["converged"] = r.converged;
+  out["summary"] = r.summary();
+  add_options_record(out, ehl::TransientMeshOptions::table(), options, options);
   if (!r.converged)
     throw ConvergenceError(
         fmt::format("transient EHL: time step {} of {} did not converge in {} cycles (scaled residual {:.3e}, force "
@@ -91,8 +100,12 @@ json run_ehl_transient(const json& case_json) {
   return out;
 }
 
+std::vector<json> ehl_transient_schema() {
+  return {gear_case_schema({"materials", "operating", "lubricant"}), TransientCase::table().schema()};
+}
+
 const RegisterKind ehl_transient_kind({"ehl_transient", "transient EHL of a spur contact from A to E (seed 004)",
-                                       run_ehl_transient});
+                                       run_ehl_transient, ehl_transient_schema});
 
 }  // namespace
 }  // namespace gearbench::app

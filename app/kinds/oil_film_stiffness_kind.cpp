@@ -5,6 +5,7 @@
 // the ordinary involute pair with the same data (seed 002's comparison).
 #include <fmt/format.h>
 
+#include "case_schema.h"
 #include "ehl/oil_film_stiffness.h"
 #include "ehl_sections.h"
 #include "kind_registry.h"
@@ -81,26 +82,59 @@ json geometry_json(const geometry::DoubleInvolutePair& pair) {
                                 {"A", {profile.A.x, profile.A.y}}}}};
 }
 
-model::DoubleInvoluteRack read_rack(model::ObjectReader& root) {
-  auto section = root.object("double_involute");
+/// "tooth_form", which picks the other keys.
+struct ToothFormChoice {
+  std::string tooth_form = "involute";
+  static const model::OptionTable<ToothFormChoice>& table() {
+    static const auto table = [] {
+      model::OptionTable<ToothFormChoice> t;
+      t.choice("tooth_form", &ToothFormChoice::tooth_form, std::vector<std::string>{"involute", "double_involute"},
+               {.description = "involute: the film stiffness along the path of contact; double_involute: over one "
+                               "mesh period of the stepped pair of the double_involute rack, beside the ordinary "
+                               "pair"});
+      return t;
+    }();
+    return table;
+  }
+};
+
+/// The keys of tooth_form "involute" beside the gear case.
+using InvoluteCase = GearFluidCase<ehl::OilFilmStiffnessOptions>;
+
+/// The keys of tooth_form "double_involute" beside the gear case.
+struct DoubleInvoluteCase {
   model::DoubleInvoluteRack rack;
-  rack.tip_tangential_shift = section.number("tip_tangential_shift", model::Range::closed(0.0, 0.5));
-  rack.root_tangential_shift = section.number("root_tangential_shift", model::Range::closed(0.0, 0.5));
-  rack.waist_tip_depth = section.number("waist_tip_depth", model::Range::closed(0.0, 2.0));
-  rack.waist_root_depth = section.number("waist_root_depth", model::Range::closed(0.0, 2.0));
-  section.finish();
-  return rack;
+  ehl::MeshPeriodOilFilmOptions options;
+  ehl::LineContactData fluid;
+  static const model::OptionTable<DoubleInvoluteCase>& table() {
+    static const auto table = [] {
+      model::OptionTable<DoubleInvoluteCase> t;
+      t.section("double_involute", &DoubleInvoluteCase::rack, ehl::double_involute_rack_table(),
+                {.description = "the stepped double-involute basic rack", .required = true});
+      t.include(&DoubleInvoluteCase::options, ehl::MeshPeriodOilFilmOptions::table());
+      add_rheology_section(t);
+      return t;
+    }();
+    return table;
+  }
+};
+
+/// Reads the case's keys over the fluid of its gear case.
+template <class Case>
+Case read_case(model::ObjectReader& root, const model::GearCase& gear_case) {
+  Case k;
+  k.fluid = gear_fluid(gear_case, "oil_film_stiffness");
+  Case::table().read(root, k);
+  root.finish();
+  Case::table().validate(k);
+  return k;
 }
 
-json run_double_involute(model::ObjectReader& root, const model::GearCase& gear_case, const ehl::LineContactData& fluid) {
-  const auto rack = read_rack(root);
-  ehl::MeshPeriodOilFilmOptions options;
-  options.samples = root.optional_integer("mesh_samples", 1, 10000).value_or(options.samples);
-  options.points_per_piece = root.optional_integer("points_per_piece", 1, 20).value_or(options.points_per_piece);
-  options.perturbation =
-      root.optional_number("perturbation", {0.0, 0.2, true, false}).value_or(options.perturbation);
-  options.grid = read_ehl_grid(root, options.grid);
-  root.finish();
+json run_double_involute(model::ObjectReader& root, const model::GearCase& gear_case) {
+  const auto k = read_case<DoubleInvoluteCase>(root, gear_case);
+  const auto& rack = k.rack;
+  const auto& options = k.options;
+  const auto& fluid = k.fluid;
 
   const geometry::GearPairGeometry geometry(gear_case.gear_pair);
   const geometry::DoubleInvolutePair stepped(geometry, rack), ordinary(geometry, {});
@@ -118,27 +152,26 @@ json run_double_involute(model::ObjectReader& root, const model::GearCase& gear_
                                  "k_oil = −Δw/Δh_c by a central difference at loads w(1 ± perturbation); a pair's film "
                                  "stiffness is ∫k_oil dl along its contact line",
                                  "involute: the ordinary pair with the same gear data (a zero step)"})},
-          {"diagnostics", {{"seconds", rs.seconds + ro.seconds}, {"ehl_solves", rs.solves + ro.solves}}}};
+          {"diagnostics", {{"seconds", rs.seconds + ro.seconds}, {"ehl_solves", rs.solves + ro.solves}}},
+          {"summary", "double involute: " + rs.summary() + "; involute: " + ro.summary()},
+          {"options_given", ehl::MeshPeriodOilFilmOptions::table().to_json(options)},
+          {"options_used", ehl::MeshPeriodOilFilmOptions::table().to_json(options)}};
 }
 
 json run_oil_film_stiffness(const json& case_json) {
   model::ObjectReader root(case_json, "");
   root.string("kind");
   root.optional_string("description");
-  const auto form = root.optional_string("tooth_form", {"involute", "double_involute"}).value_or("involute");
+  ToothFormChoice form;
+  ToothFormChoice::table().read(root, form);
   const auto gear_case = model::read_gear_case(root);
-  const auto fluid = read_gear_fluid(root, gear_case, "oil_film_stiffness");
-  if (form == "double_involute") return run_double_involute(root, gear_case, fluid);
+  if (form.tooth_form == "double_involute") return run_double_involute(root, gear_case);
   if (root.has("double_involute"))
     throw InputError("double_involute: the rack section is read only with tooth_form \"double_involute\" "
                      "(tooth_form is \"involute\")");
-  ehl::OilFilmStiffnessOptions options;
-  options.positions = root.optional_integer("positions", 1, 10000).value_or(options.positions);
-  options.perturbation =
-      root.optional_number("perturbation", {0.0, 0.2, true, false}).value_or(options.perturbation);
-  options.load_sharing = root.optional_string("load_sharing", {"equal", "iso"}).value_or(options.load_sharing);
-  options.grid = read_ehl_grid(root, options.grid);
-  root.finish();
+  const auto k = read_case<InvoluteCase>(root, gear_case);
+  const auto& options = k.options;
+  const auto& fluid = k.fluid;
 
   const geometry::GearPairGeometry geometry(gear_case.gear_pair);
   const auto r = ehl::OilFilmStiffness(geometry, *gear_case.materials, *gear_case.operating, fluid, options).solve();
@@ -148,11 +181,25 @@ json run_oil_film_stiffness(const json& case_json) {
           {"points", points_json(r)},
           {"notes", json::array({"k_oil = −Δw/Δh_c by a central difference at loads w(1 ± perturbation)",
                                  "stiffness_with_film: the pair stiffness and b·k_oil in series"})},
-          {"diagnostics", {{"seconds", r.seconds}}}};
+          {"diagnostics", {{"seconds", r.seconds}}},
+          {"summary", r.summary()},
+          {"options_given", ehl::OilFilmStiffnessOptions::table().to_json(options)},
+          {"options_used", ehl::OilFilmStiffnessOptions::table().to_json(options)}};
+}
+
+std::vector<json> oil_film_schema() {
+  return {gear_case_schema({"materials", "operating", "lubricant"}), ToothFormChoice::table().schema()};
+}
+
+template <class Case>
+KindSpec::SchemaVariant form_keys(const char* name) {
+  return {name, [] { return std::vector<json>{Case::table().schema()}; }};
 }
 
 const RegisterKind oil_film_kind({"oil_film_stiffness", "EHL oil-film stiffness along the path of contact (seed 002)",
-                                  run_oil_film_stiffness});
+                                  run_oil_film_stiffness, oil_film_schema, "tooth_form",
+                                  {form_keys<InvoluteCase>("involute"),
+                                   form_keys<DoubleInvoluteCase>("double_involute")}});
 
 }  // namespace
 }  // namespace gearbench::app

@@ -6,7 +6,10 @@
 #include <fmt/format.h>
 
 #include "ehl_tables.h"
+#include "model/case_reader.h"
 #include "model/errors.h"
+#include "oil_film_stiffness.h"
+#include "transient_mesh_ehl.h"
 
 namespace gearbench::ehl {
 namespace {
@@ -155,6 +158,71 @@ model::OptionTable<MoesPoint> make_moes_table() {
   return t;
 }
 
+model::OptionTable<model::DoubleInvoluteRack> make_rack_table() {
+  using R = model::DoubleInvoluteRack;
+  model::OptionTable<R> t;
+  t.number("tip_tangential_shift", &R::tip_tangential_shift, Range::closed(0.0, 0.5),
+           {.description = "y_a*: the tip line moved towards the tooth centre, in m_n", .required = true});
+  t.number("root_tangential_shift", &R::root_tangential_shift, Range::closed(0.0, 0.5),
+           {.description = "y_d*: the root line moved away from the tooth centre, in m_n", .required = true});
+  t.number("waist_tip_depth", &R::waist_tip_depth, Range::closed(0.0, 2.0),
+           {.description = "l_a*: depth of the tip line's lower end below the datum line, in m_n", .required = true});
+  t.number("waist_root_depth", &R::waist_root_depth, Range::closed(0.0, 2.0),
+           {.description = "l_d*: depth of the root line's upper end below the datum line, in m_n", .required = true});
+  return t;
+}
+
+/// The key every load-perturbing film-stiffness solve shares.
+template <class O>
+void add_perturbation(model::OptionTable<O>& t) {
+  t.number("perturbation", &O::perturbation, Range{0.0, 0.2, true, false},
+           {.description = "delta: the film stiffness is a central difference at loads w(1 +- delta)"});
+}
+
+template <class O>
+void add_grid(model::OptionTable<O>& t) {
+  t.section("grid", &O::grid, EhlOptions::table(), {.description = "the EHL multigrid"});
+}
+
+/// The solvers that follow a contact by a sequence of warm-started solves need a fixed grid.
+template <class O>
+void add_fixed_grid_rule(model::OptionTable<O>& t, std::string who) {
+  t.rule([who](const O& o, const std::string& p) {
+    if (o.grid.adaptive())
+      throw InputError(fmt::format("{}grid.nodes: {} needs a fixed grid (grid.nodes or grid.levels)", p, who));
+  });
+}
+
+model::OptionTable<TransientMeshOptions> make_transient_table() {
+  model::OptionTable<TransientMeshOptions> t;
+  t.integer("time_steps", &TransientMeshOptions::steps, 4, 100000, {.description = "time steps from A to E"});
+  model::add_load_sharing(t, &TransientMeshOptions::load_sharing);
+  add_grid(t);
+  add_fixed_grid_rule(t, "ehl_transient");
+  return t;
+}
+
+model::OptionTable<OilFilmStiffnessOptions> make_oil_film_table() {
+  model::OptionTable<OilFilmStiffnessOptions> t;
+  t.integer("positions", &OilFilmStiffnessOptions::positions, 1, 10000,
+            {.description = "contact positions: centres of equal steps from A to E"});
+  add_perturbation(t);
+  model::add_load_sharing(t, &OilFilmStiffnessOptions::load_sharing);
+  add_grid(t);
+  return t;
+}
+
+model::OptionTable<MeshPeriodOilFilmOptions> make_mesh_period_table() {
+  model::OptionTable<MeshPeriodOilFilmOptions> t;
+  t.integer("mesh_samples", &MeshPeriodOilFilmOptions::samples, 1, 10000,
+            {.description = "instants: centres of equal steps of one mesh period"});
+  t.integer("points_per_piece", &MeshPeriodOilFilmOptions::points_per_piece, 1, 20,
+            {.description = "Gauss-Legendre points along a helical contact-line piece"});
+  add_perturbation(t);
+  add_grid(t);
+  return t;
+}
+
 }  // namespace
 
 const model::OptionTable<EhlOptions>& EhlOptions::table() { return model::built_once<make_grid_table>(); }
@@ -180,4 +248,23 @@ const model::OptionTable<LineContactData>& line_lubricant_table() {
   return model::built_once<make_line_lubricant_table>();
 }
 const model::OptionTable<MoesPoint>& MoesPoint::table() { return model::built_once<make_moes_table>(); }
+const model::OptionTable<model::DoubleInvoluteRack>& double_involute_rack_table() {
+  return model::built_once<make_rack_table>();
+}
+
+const model::OptionTable<TransientMeshOptions>& TransientMeshOptions::table() {
+  return model::built_once<make_transient_table>();
+}
+void TransientMeshOptions::validate() const { table().validate(*this); }
+
+const model::OptionTable<OilFilmStiffnessOptions>& OilFilmStiffnessOptions::table() {
+  return model::built_once<make_oil_film_table>();
+}
+void OilFilmStiffnessOptions::validate() const { table().validate(*this); }
+
+const model::OptionTable<MeshPeriodOilFilmOptions>& MeshPeriodOilFilmOptions::table() {
+  return model::built_once<make_mesh_period_table>();
+}
+void MeshPeriodOilFilmOptions::validate() const { table().validate(*this); }
+
 }  // namespace gearbench::ehl

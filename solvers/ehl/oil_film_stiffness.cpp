@@ -71,16 +71,6 @@ EhlOptions OilFilmStiffnessOptions::default_grid() {
   return o;
 }
 
-void OilFilmStiffnessOptions::validate() const {
-  if (positions < 1 || positions > 10000)
-    throw InputError(fmt::format("positions = {}: allowed range is [1, 10000]", positions));
-  if (!(perturbation > 0.0 && perturbation <= 0.2))
-    throw InputError(fmt::format("perturbation = {}: allowed range is (0, 0.2]", perturbation));
-  if (load_sharing != "equal" && load_sharing != "iso")
-    throw InputError(fmt::format("load_sharing = \"{}\": allowed values are \"equal\", \"iso\"", load_sharing));
-  grid.validate();
-}
-
 std::string OilFilmStiffnessResult::summary() const {
   return fmt::format("{} positions, {:.2f} s", points.size(), seconds);
 }
@@ -155,16 +145,6 @@ OilFilmStiffnessResult OilFilmStiffness::solve() const {
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
-}
-
-void MeshPeriodOilFilmOptions::validate() const {
-  if (samples < 1 || samples > 10000)
-    throw InputError(fmt::format("mesh_samples = {}: allowed range is [1, 10000]", samples));
-  if (points_per_piece < 1 || points_per_piece > 20)
-    throw InputError(fmt::format("points_per_piece = {}: allowed range is [1, 20]", points_per_piece));
-  if (!(perturbation > 0.0 && perturbation <= 0.2))
-    throw InputError(fmt::format("perturbation = {}: allowed range is (0, 0.2]", perturbation));
-  grid.validate();
 }
 
 std::string MeshPeriodOilFilmResult::summary() const {

@@ -23,6 +23,8 @@ struct OilFilmStiffnessOptions {
   EhlOptions grid = default_grid();
 
   static EhlOptions default_grid();
+  /// The case keys of tooth_form "involute" beside the gear pair and the fluid (ehl_options.cpp).
+  static const model::OptionTable<OilFilmStiffnessOptions>& table();
   void validate() const;              ///< InputError naming the key
 };
 
@@ -88,6 +90,8 @@ struct MeshPeriodOilFilmOptions {
   int points_per_piece = 3;     ///< Gauss–Legendre points along a helical contact-line piece
   double perturbation = 0.02;   ///< δ: loads w(1 ± δ)
   EhlOptions grid = OilFilmStiffnessOptions::default_grid();
+  /// The case keys of tooth_form "double_involute" beside the rack (ehl_options.cpp).
+  static const model::OptionTable<MeshPeriodOilFilmOptions>& table();
   void validate() const;        ///< InputError naming the key
 };
 

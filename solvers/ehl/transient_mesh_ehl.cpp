@@ -20,15 +20,6 @@ EhlOptions TransientMeshOptions::default_grid() {
   return o;
 }
 
-void TransientMeshOptions::validate() const {
-  if (steps < 4 || steps > 100000)
-    throw InputError(fmt::format("time_steps = {}: allowed range is [4, 100000]", steps));
-  if (load_sharing != "equal" && load_sharing != "iso")
-    throw InputError(fmt::format("load_sharing = \"{}\": allowed values are \"equal\", \"iso\"", load_sharing));
-  grid.validate();
-  if (grid.adaptive()) throw InputError("grid.levels = 0: ehl_transient needs a fixed grid (grid.nodes or grid.levels)");
-}
-
 std::string TransientMeshResult::summary() const {
   return fmt::format("{} steps, {} cycles, {:.1f} work units, {:.2f} s; p_max {:.4e} Pa, h_min {:.4e} m{}",
                      steps.size(), total_cycles, work_units, seconds, p_max, h_min,

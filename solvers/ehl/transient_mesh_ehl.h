@@ -24,6 +24,8 @@ struct TransientMeshOptions {
   EhlOptions grid = default_grid();     ///< levels, cycles; max_cycles per time step
 
   static EhlOptions default_grid();
+  /// The case keys beside the gear pair and the fluid (ehl_options.cpp).
+  static const model::OptionTable<TransientMeshOptions>& table();
   void validate() const;                ///< InputError naming the key
 };
 

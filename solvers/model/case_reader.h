@@ -24,6 +24,14 @@ const OptionTable<Material>& material_table();
 const OptionTable<OperatingPoint>& operating_table();
 const OptionTable<Lubricant>& lubricant_table();
 
+/// "load_sharing": how the load of a pair is shared where two pairs mesh, for every kind that
+/// follows a contact along the path (the default is the member's).
+template <class O, class Access>
+void add_load_sharing(OptionTable<O>& t, Access access) {
+  t.choice("load_sharing", access, std::vector<std::string>{"equal", "iso"},
+           {.description = "load share of a pair where two mesh: half each (equal) or ISO/TR 15144-1's X_Y (iso)"});
+}
+
 GearPair read_gear_pair(ObjectReader section);
 /// `materials`: one object (both gears) or an array of two.
 std::array<Material, 2> read_materials(ObjectReader& root);
