@@ -9,6 +9,9 @@
 #include "dynamics/speed_sweep.h"
 #include "dynamics/spur6_dynamics.h"
 #include "efficiency/efficiency_sweep.h"
+#include "ehl/ehl_tables.h"
+#include "ehl/thermal_line_contact.h"
+#include "ehl/transient_mesh_ehl.h"
 #include "efficiency/mesh_loss.h"
 #include "micropitting/iso15144_case.h"
 #include "model/case_reader.h"
@@ -155,6 +158,38 @@ TEST(OptionTable, SchemaDefaultsAreTheMemberInitialisers) {
   EXPECT_FALSE(oil["properties"]["lubricant_factor_XL"].contains("default"));
   EXPECT_NE(oil["properties"]["lubricant_factor_XL"]["description"].get<std::string>().find("by base"),
             std::string::npos);
+}
+
+// The EHL grid (one table for every EHL solver): an absent nodes, levels or domain is a value
+// the table knows as "the solver chooses", valid and left out of the record; any other value
+// is held to the range the case reader uses, named with its section; the relaxation settings
+// the C++ API alone sets are held to theirs; the thermal lubricant's 1/GPa converts by division.
+TEST(OptionTable, EhlGridUnsetValuesAndRanges) {
+  ehl::EhlOptions o;
+  EXPECT_NO_THROW(o.validate());
+  EXPECT_FALSE(ehl::EhlOptions::table().to_json(o).contains("nodes"));
+  o.nodes = 5;
+  EXPECT_EQ(input_error_of([&] { o.validate(); }), "grid.nodes = 5: allowed range is [9, 1048577]");
+  o = {};
+  o.x_in = -3.0;
+  EXPECT_EQ(input_error_of([&] { o.validate(); }), "grid.x_in = -3, grid.x_out = 0: give both or neither");
+  o = {};
+  o.pre_sweeps = 21;
+  EXPECT_EQ(input_error_of([&] { o.validate(); }), "grid.pre_sweeps = 21: allowed range is [0, 20]");
+  ehl::TransientMeshOptions t;
+  t.grid.nodes = 0;  // the transient follows the contact on one fixed grid
+  EXPECT_NE(input_error_of([&] { t.validate(); }).find("grid.nodes: ehl_transient needs a fixed grid"),
+            std::string::npos);
+  ehl::ThermalEhlOptions thermal;
+  thermal.factor_relaxation = 0.0;
+  EXPECT_EQ(input_error_of([&] { thermal.validate(); }), "thermal.factor_relaxation = 0: allowed range is (0, 1]");
+
+  const json lubricant = {{"pressure_viscosity_1_per_GPa", 10.556}, {"density_kg_m3", 900},
+                          {"thermal_conductivity_W_per_mK", 0.14}, {"specific_heat_J_per_kgK", 2000},
+                          {"nu40_mm2_s", 320}, {"nu100_mm2_s", 20}};
+  const auto l = model::read_thermal_lubricant(model::ObjectReader(lubricant, "lubricant"));
+  EXPECT_EQ(l.pressure_viscosity, 10.556 / 1e9);
+  EXPECT_EQ(model::thermal_lubricant_table().to_json(l)["pressure_viscosity_1_per_GPa"], 10.556);
 }
 
 }  // namespace

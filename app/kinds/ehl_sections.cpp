@@ -8,15 +8,6 @@
 
 namespace gearbench::app {
 
-ehl::EhlOptions read_ehl_grid(model::ObjectReader& root, ehl::EhlOptions defaults) {
-  ehl::EhlOptions o = defaults;
-  if (!root.has("grid")) return o;
-  auto g = root.object("grid");
-  ehl::EhlOptions::table().read(g, o);
-  g.finish();
-  o.validate();
-  return o;
-}
 /// Non-finite numbers become null: diagnostics of a failed solve may hold them.
 nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 bool newtonian_friction_in_range(double mu) { return std::abs(mu) <= 1.0; }
@@ -35,16 +26,6 @@ nlohmann::json finite_vector(const std::vector<double>& v, double scale) {
   return out;
 }
 
-ehl::LineContactData read_line_contact(model::ObjectReader& root) {
-  auto c = root.object("contact");
-  ehl::ContactInput input;
-  ehl::ContactInput::table().read(c, input);
-  c.finish();
-  ehl::ContactInput::table().validate(input, "contact.");
-  ehl::LineContactData d;
-  input.apply(d);
-  return d;
-}
 ehl::LineContactData gear_fluid(const model::GearCase& c, const std::string& kind) {
   if (!c.operating) throw InputError("operating: missing required key (kind " + kind + ")");
   if (!c.materials) throw InputError("materials: missing required key (kind " + kind + ")");

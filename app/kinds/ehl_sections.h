@@ -12,13 +12,6 @@
 
 namespace gearbench::app {
 
-/// The optional "grid" section (EhlOptions::table()) over the given defaults.
-ehl::EhlOptions read_ehl_grid(model::ObjectReader& root, ehl::EhlOptions defaults = {});
-
-/// The dimensional "contact" section: {"reduced_radius_m", "load_per_length_N_per_m",
-/// "surface_speeds_m_per_s": [u1, u2], "reduced_modulus_Pa"}; lubricant fields left empty.
-ehl::LineContactData read_line_contact(model::ObjectReader& root);
-
 /// A gear-pair case's contact fluid and solids for EHL along the mesh (requires "operating",
 /// "materials" and "lubricant"): E′ from "materials", η0, α and z from "lubricant"; the
 /// optional "rheology" section (add_rheology_section) is read over it. Radius, load and speeds

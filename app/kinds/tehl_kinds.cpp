@@ -5,10 +5,13 @@
 #include <optional>
 #include <fmt/format.h>
 
+#include "case_schema.h"
+#include "ehl/ehl_tables.h"
 #include "ehl/thermal_mesh_path.h"
 #include "ehl_sections.h"
 #include "geometry/gear_pair_geometry.h"
 #include "kind_registry.h"
+#include "lubricant/lubricant_section.h"
 #include "model/case_reader.h"
 #include "model/errors.h"
 #include "model/json_reader.h"
@@ -24,6 +27,42 @@ using micropitting::micropitting_json;
 using micropitting::MicropittingCase;
 using micropitting::read_micropitting;
 
+/// The keys of a tehl_point case: the contact, the inlet temperature, lubricant and solids, and
+/// the solver's options.
+struct TehlPointCase {
+  ehl::ContactInput contact;
+  double inlet_temperature = 0.0;
+  model::ThermalLubricant lubricant;
+  model::ThermalSolids solids;
+  ehl::ThermalEhlOptions options;
+
+  static const model::OptionTable<TehlPointCase>& table() {
+    static const auto table = [] {
+      model::OptionTable<TehlPointCase> t;
+      t.section("contact", &TehlPointCase::contact, ehl::ContactInput::table(),
+                {.description = "the dimensional contact", .required = true});
+      model::add_thermal_media(t);
+      t.include(&TehlPointCase::options, ehl::ThermalEhlOptions::table());
+      return t;
+    }();
+    return table;
+  }
+};
+
+/// The thermal kinds' lubricant may name an oil from the catalogue.
+json with_named_lubricant(json schema) {
+  auto& lubricant = schema["properties"]["lubricant"];
+  lubricant = lubricant::named_or_explicit_schema(lubricant);
+  return schema;
+}
+
+/// Options record, convergence and summary of one thermal contact.
+void add_run_record(json& out, const ehl::ThermalEhlOptions& options, const ehl::ThermalEhlResult& r) {
+  out["converged"] = r.converged;
+  out["summary"] = r.summary();
+  add_options_record(out, ehl::ThermalEhlOptions::table(), options, options);
+}
+
 ConvergenceError not_converged(const ehl::ThermalEhlResult& r, const json& out) {
   return ConvergenceError(fmt::format("thermal EHL did not converge: {}", r.summary()), out.dump(2));
 }
@@ -32,12 +71,16 @@ json run_tehl_point(const json& case_json) {
   model::ObjectReader root(case_json, "");
   root.string("kind");
   root.optional_string("description");
-  const auto contact = read_line_contact(root);
-  const double T0 = model::read_inlet_temperature(root);
-  const auto options = read_thermal_options(root);
-  const auto lubricant = model::read_thermal_lubricant(root.object("lubricant"));
-  const auto solids = model::read_thermal_solids(root.object("solids"));
+  TehlPointCase k;
+  TehlPointCase::table().read(root, k);
   root.finish();
+  TehlPointCase::table().validate(k);
+  ehl::LineContactData contact;
+  k.contact.apply(contact);
+  const double T0 = k.inlet_temperature;
+  const auto& options = k.options;
+  const auto& lubricant = k.lubricant;
+  const auto& solids = k.solids;
 
   const lubricant::ThermalRheology rheology(lubricant, T0);
   const auto r = ehl::ThermalLineContact(contact, rheology, solids, options).try_solve();
@@ -46,6 +89,7 @@ json run_tehl_point(const json& case_json) {
   out["inlet_temperature_K"] = T0;
   out["inlet_viscosity_Pa_s"] = rheology.inlet_viscosity();
   out["roelands_z"] = rheology.roelands_z();
+  add_run_record(out, options, r);
   if (!r.converged) throw not_converged(r, out);
   return out;
 }
@@ -55,12 +99,14 @@ json run_tehl_path(const json& case_json) {
   root.string("kind");
   root.optional_string("description");
   const auto c = model::read_thermal_path_case(root);
-  const auto options = read_thermal_options(root);
+  ehl::ThermalEhlOptions options;
+  ehl::ThermalEhlOptions::table().read(root, options);
   std::optional<MicropittingCase> micropitting;
   if (root.has("micropitting"))
     micropitting = read_micropitting(root, model::GearCase{c.gear_pair, c.materials, c.operating, std::nullopt},
                                      "tehl_path");
   root.finish();
+  ehl::ThermalEhlOptions::table().validate(options);
 
   const geometry::GearPairGeometry geometry(c.gear_pair);
   const lubricant::ThermalRheology rheology(c.lubricant, c.inlet_temperature);
@@ -89,14 +135,25 @@ json run_tehl_path(const json& case_json) {
           {"minimum_film_point", result.points[static_cast<std::size_t>(result.minimum_film_point)].name},
           {"points", points},
           {"seconds", result.seconds}};
+  add_options_record(out, ehl::ThermalEhlOptions::table(), options, options);
   if (micropitting) out["micropitting"] = micropitting_json(compare_with_iso(result, c, *micropitting, options));
   return out;
 }
 
+std::vector<json> tehl_point_schema() { return {with_named_lubricant(TehlPointCase::table().schema())}; }
+
+std::vector<json> tehl_path_schema() {
+  // The gear case's sections first: the thermal lubricant replaces its "lubricant".
+  return {gear_case_schema({"materials", "operating"}), with_named_lubricant(model::ThermalPathCase::table().schema()),
+          ehl::ThermalEhlOptions::table().schema(),
+          section_part("micropitting",
+                       MicropittingCase::table().schema("ISO/TR 15144-1 method B beside the thermal EHL"), false)};
+}
+
 const RegisterKind tehl_point_kind({"tehl_point", "steady thermal line-contact EHL (generalized Reynolds, energy "
-                                    "equation in film and solids)", run_tehl_point});
+                                    "equation in film and solids)", run_tehl_point, tehl_point_schema});
 const RegisterKind tehl_path_kind({"tehl_path", "thermal EHL at A, AB, B, C, D, DE, E of a gear pair's path of "
-                                   "contact", run_tehl_path});
+                                   "contact", run_tehl_path, tehl_path_schema});
 
 }  // namespace
 }  // namespace gearbench::app

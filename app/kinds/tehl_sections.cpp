@@ -1,4 +1,4 @@
-// The "thermal" section and the result JSON of the thermal EHL kinds.
+// The result JSON of the thermal EHL kinds.
 #include "tehl_sections.h"
 
 #include <fmt/format.h>
@@ -8,29 +8,7 @@
 
 namespace gearbench::app {
 
-using model::Range;
 using nlohmann::json;
-
-ehl::ThermalEhlOptions read_thermal_options(model::ObjectReader& root) {
-  ehl::ThermalEhlOptions o;
-  o.grid = read_ehl_grid(root, o.grid);
-  if (root.optional_string("rheology", {"newtonian", "eyring"}).value_or("newtonian") == "eyring")
-    o.film.rheology = lubricant::ShearRheology::eyring;
-  if (!root.has("thermal")) return o;
-  auto t = root.object("thermal");
-  o.film.film_nodes = t.optional_integer("film_nodes", 4, 200).value_or(o.film.film_nodes);
-  o.film.solid_nodes = t.optional_integer("solid_nodes", 3, 200).value_or(o.film.solid_nodes);
-  if (auto d = t.optional_number("solid_depth_mm", Range::positive(1e3), "mm")) o.film.depth = *d * 1e-3;
-  const auto sources = t.optional_string("heat_sources", {"shear_and_compression", "shear", "compression", "none"})
-                           .value_or("shear_and_compression");
-  o.film.shear_heating = sources == "shear_and_compression" || sources == "shear";
-  o.film.compression = sources == "shear_and_compression" || sources == "compression";
-  o.max_iterations = t.optional_integer("max_iterations", 1, 10000).value_or(o.max_iterations);
-  o.temperature_tolerance =
-      t.optional_number("temperature_tolerance", {0.0, 10.0, true, true}).value_or(o.temperature_tolerance);
-  t.finish();
-  return o;
-}
 
 json thermal_result_json(const ehl::ThermalEhlResult& r, bool fields) {
   json out = {

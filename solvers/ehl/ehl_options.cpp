@@ -9,6 +9,7 @@
 #include "model/case_reader.h"
 #include "model/errors.h"
 #include "oil_film_stiffness.h"
+#include "thermal_line_contact.h"
 #include "transient_mesh_ehl.h"
 
 namespace gearbench::ehl {
@@ -223,6 +224,85 @@ model::OptionTable<MeshPeriodOilFilmOptions> make_mesh_period_table() {
   return t;
 }
 
+/// Which heat sources the film's energy equation holds: a view of the two switches as one key.
+enum class HeatSources { shear_and_compression, shear, compression, none };
+constexpr bool heats_by_shear(HeatSources s) { return s == HeatSources::shear_and_compression || s == HeatSources::shear; }
+constexpr bool heats_by_compression(HeatSources s) {
+  return s == HeatSources::shear_and_compression || s == HeatSources::compression;
+}
+/// FilmTemperatureOptions' shear_heating and compression, read and written as one HeatSources.
+template <class B>
+struct HeatSourcesRef {
+  B& shear;
+  B& compression;
+  bool operator==(HeatSources s) const { return shear == heats_by_shear(s) && compression == heats_by_compression(s); }
+  const HeatSourcesRef& operator=(HeatSources s) const {
+    shear = heats_by_shear(s);
+    compression = heats_by_compression(s);
+    return *this;
+  }
+};
+template <class F>
+HeatSourcesRef<std::conditional_t<std::is_const_v<F>, const bool, bool>> heat_sources(F& film) {
+  return {film.shear_heating, film.compression};
+}
+
+/// The thermal iteration's settings the C++ API alone sets.
+model::OptionTable<ThermalEhlOptions> make_thermal_tuning_table() {
+  model::OptionTable<ThermalEhlOptions> t;
+  t.integer("sweeps_per_iteration", &ThermalEhlOptions::sweeps_per_iteration, 1, 1000,
+            {.description = "temperature sweeps between pressure solves"});
+  t.integer("cycles_per_iteration", &ThermalEhlOptions::cycles_per_iteration, 1, 1000,
+            {.description = "multigrid cycles per pressure solve"});
+  t.number("film_tolerance", &ThermalEhlOptions::film_tolerance, Range{0.0, 0.1, true, true},
+           {.description = "relative change of h_min between iterations"});
+  t.number("factor_relaxation", &ThermalEhlOptions::factor_relaxation, Range{0.0, 1.0, true, false},
+           {.description = "relaxation of the viscosity and density factors"});
+  return t;
+}
+
+model::OptionTable<ThermalEhlOptions> make_thermal_section_table() {
+  model::OptionTable<ThermalEhlOptions> t;
+  t.integer("film_nodes", [](auto& o) -> auto& { return o.film.film_nodes; }, 4, 200,
+            {.description = "nodes across the film"});
+  t.integer("solid_nodes", [](auto& o) -> auto& { return o.film.solid_nodes; }, 3, 200,
+            {.description = "nodes into each solid, surface and depth included"});
+  t.number("solid_depth_mm", [](auto& o) -> auto& { return o.film.depth; }, Range::positive(1e3),
+           {.description = "depth below which the solids stay at the inlet temperature; absent: from the Hertz "
+                           "half-width and the Peclet numbers",
+            .unit = "mm", .scale = 1e-3, .unset = 0.0});
+  t.choice("heat_sources", [](auto& o) { return heat_sources(o.film); },
+           std::vector<std::pair<std::string, HeatSources>>{
+               {"shear_and_compression", HeatSources::shear_and_compression},
+               {"shear", HeatSources::shear},
+               {"compression", HeatSources::compression},
+               {"none", HeatSources::none}},
+           {.description = "the film's heat sources: shear heating, compression heating"});
+  t.integer("max_iterations", &ThermalEhlOptions::max_iterations, 1, 10000,
+            {.description = "pressure-temperature iterations before the solve is reported unconverged"});
+  t.number("temperature_tolerance", &ThermalEhlOptions::temperature_tolerance, Range{0.0, 10.0, true, true},
+           {.description = "largest temperature change between iterations, relative to the film's largest rise "
+                           "(at least 10 K)"});
+  static const auto tuning = make_thermal_tuning_table();
+  t.rule([](const ThermalEhlOptions& o, const std::string& p) { tuning.validate(o, p); });
+  return t;
+}
+
+model::OptionTable<ThermalEhlOptions> make_thermal_table() {
+  model::OptionTable<ThermalEhlOptions> t;
+  add_grid(t);
+  t.choice("rheology", [](auto& o) -> auto& { return o.film.rheology; },
+           std::vector<std::pair<std::string, lubricant::ShearRheology>>{
+               {"newtonian", lubricant::ShearRheology::newtonian}, {"eyring", lubricant::ShearRheology::eyring}},
+           {.description = "shear response of the film: Newtonian, or Ree-Eyring with tau0 from "
+                           "lubricant.eyring_stress_MPa"});
+  static const auto thermal = make_thermal_section_table();
+  t.section("thermal", [](auto& o) -> auto& { return o; }, thermal,
+            {.description = "the thermal solve: film and solid nodes, heat sources, iterations"});
+  add_fixed_grid_rule(t, "the thermal solver");
+  return t;
+}
+
 }  // namespace
 
 const model::OptionTable<EhlOptions>& EhlOptions::table() { return model::built_once<make_grid_table>(); }
@@ -266,5 +346,10 @@ const model::OptionTable<MeshPeriodOilFilmOptions>& MeshPeriodOilFilmOptions::ta
   return model::built_once<make_mesh_period_table>();
 }
 void MeshPeriodOilFilmOptions::validate() const { table().validate(*this); }
+
+const model::OptionTable<ThermalEhlOptions>& ThermalEhlOptions::table() {
+  return model::built_once<make_thermal_table>();
+}
+void ThermalEhlOptions::validate() const { table().validate(*this); }
 
 }  // namespace gearbench::ehl

@@ -20,23 +20,6 @@ EhlOptions ThermalEhlOptions::default_grid() {
   return o;
 }
 
-void ThermalEhlOptions::validate() const {
-  grid.validate();
-  if (grid.adaptive()) throw InputError("grid.levels = 0: the thermal solver needs a fixed grid (grid.nodes or grid.levels)");
-  if (max_iterations < 1 || max_iterations > 10000)
-    throw InputError(fmt::format("thermal.max_iterations = {}: allowed range is [1, 10000]", max_iterations));
-  if (cycles_per_iteration < 1 || cycles_per_iteration > 1000)
-    throw InputError(fmt::format("thermal.cycles_per_iteration = {}: allowed range is [1, 1000]", cycles_per_iteration));
-  if (sweeps_per_iteration < 1 || sweeps_per_iteration > 1000)
-    throw InputError(fmt::format("thermal.sweeps_per_iteration = {}: allowed range is [1, 1000]", sweeps_per_iteration));
-  if (!(temperature_tolerance > 0.0 && temperature_tolerance < 10.0))
-    throw InputError(fmt::format("thermal.temperature_tolerance = {}: allowed range is (0, 10)", temperature_tolerance));
-  if (!(film_tolerance > 0.0 && film_tolerance < 0.1))
-    throw InputError(fmt::format("thermal.film_tolerance = {}: allowed range is (0, 0.1)", film_tolerance));
-  if (!(factor_relaxation > 0.0 && factor_relaxation <= 1.0))
-    throw InputError(fmt::format("thermal.factor_relaxation = {}: allowed range is (0, 1]", factor_relaxation));
-}
-
 std::string ThermalEhlResult::summary() const {
   return fmt::format("{} thermal iterations, {:.3f} s; h_min {:.4e} m (isothermal {:.4e}), h_c {:.4e} m, "
                      "p_max {:.4e} Pa, film temperature rise {:.2f} K",

@@ -45,6 +45,8 @@ struct ThermalEhlOptions {
   double film_tolerance = 1e-5;        ///< relative change of h_min between iterations
   double factor_relaxation = 0.7;      ///< new factors = old + ω·(computed − old)
 
+  /// "grid", "rheology" and the "thermal" section (ehl_options.cpp).
+  static const model::OptionTable<ThermalEhlOptions>& table();
   void validate() const;               ///< InputError naming the key
 };
 

@@ -23,6 +23,11 @@ const OptionTable<GearPair>& gear_pair_table();
 const OptionTable<Material>& material_table();
 const OptionTable<OperatingPoint>& operating_table();
 const OptionTable<Lubricant>& lubricant_table();
+/// The thermal EHL kinds' "lubricant" (Roelands form or Walther form), "solids" and
+/// "load_factors".
+const OptionTable<ThermalLubricant>& thermal_lubricant_table();
+const OptionTable<ThermalSolids>& thermal_solids_table();
+const OptionTable<LoadFactors>& load_factors_table();
 
 /// "load_sharing": how the load of a pair is shared where two pairs mesh, for every kind that
 /// follows a contact along the path (the default is the member's).
@@ -30,6 +35,19 @@ template <class O, class Access>
 void add_load_sharing(OptionTable<O>& t, Access access) {
   t.choice("load_sharing", access, std::vector<std::string>{"equal", "iso"},
            {.description = "load share of a pair where two mesh: half each (equal) or ISO/TR 15144-1's X_Y (iso)"});
+}
+
+/// "inlet_temperature_K", "lubricant" and "solids" of a thermal EHL case, in the members
+/// `T0`, `lubricant` and `solids` of O.
+template <class O>
+void add_thermal_media(OptionTable<O>& t) {
+  t.number("inlet_temperature_K", &O::inlet_temperature, Range::closed(200.0, 600.0),
+           {.description = "inlet temperature T0 (lubricant and solids far from the contact)", .unit = "K",
+            .required = true});
+  t.section("lubricant", &O::lubricant, thermal_lubricant_table(),
+            {.description = "the lubricant (viscosity at the inlet temperature or by nu40 and nu100)", .required = true});
+  t.section("solids", &O::solids, thermal_solids_table(),
+            {.description = "thermal data of the solids [pinion or surface 1, wheel or surface 2]", .required = true});
 }
 
 GearPair read_gear_pair(ObjectReader section);
@@ -48,9 +66,6 @@ ThermalSolids read_thermal_solids(ObjectReader section);
 /// "load_factors": {"K_A", "K_v", "K_H_alpha", "K_H_beta"}, each in [1, 10], default 1.
 LoadFactors read_load_factors(ObjectReader section);
 
-/// "inlet_temperature_K" of a thermal EHL case: T0 [K] in [200, 600].
-double read_inlet_temperature(ObjectReader& root);
-
 /// The physical data of a thermal EHL path case (kind "tehl_path").
 struct ThermalPathCase {
   GearPair gear_pair;
@@ -61,6 +76,8 @@ struct ThermalPathCase {
   ThermalSolids solids;
   double inlet_temperature = 0.0;     ///< T0 [K]
   std::string load_sharing = "iso";   ///< "iso" (ISO/TR 15144-1 X_Y) or "equal"
+  /// The keys beside gear_pair, materials and operating.
+  static const OptionTable<ThermalPathCase>& table();
 };
 
 /// Reads "gear_pair", "materials", "operating", "load_factors" (optional), "lubricant",

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
+#include <tuple>
 
 #include "case_reader.h"
 #include "errors.h"
@@ -178,11 +179,89 @@ OptionTable<Lubricant> make_lubricant_table() {
   return t;
 }
 
+/// Give either the Roelands form (η0 and β at the inlet) or the Walther form (ν40 and ν100).
+void check_viscosity_form(ObjectReader& l, const ThermalLubricant&) {
+  const bool walther = l.has("nu40_mm2_s") || l.has("nu100_mm2_s");
+  if (walther && (l.has("viscosity_Pa_s") || l.has("temperature_viscosity_1_per_K")))
+    throw InputError(l.key_path("viscosity_Pa_s") + ": give either viscosity_Pa_s with "
+                     "temperature_viscosity_1_per_K (Roelands) or nu40_mm2_s with nu100_mm2_s "
+                     "(Ubbelohde–Walther), not both");
+  const auto both = [&l](const char* a, const char* b) {
+    for (const auto* key : {a, b})
+      if (!l.has(key)) throw InputError(fmt::format("{}: missing required key", l.key_path(key)));
+  };
+  if (walther) both("nu40_mm2_s", "nu100_mm2_s");
+  else both("viscosity_Pa_s", "temperature_viscosity_1_per_K");
+}
+
+OptionTable<ThermalLubricant> make_thermal_lubricant_table() {
+  OptionTable<ThermalLubricant> t;
+  t.number("pressure_viscosity_1_per_GPa", &ThermalLubricant::pressure_viscosity, Range::positive(100.0),
+           {.description = "pressure-viscosity coefficient alpha at the inlet temperature", .unit = "1/GPa",
+            .required = true, .divisor = 1e9});
+  t.number("density_kg_m3", &ThermalLubricant::density_15C, Range::closed(500.0, 2000.0),
+           {.description = "density rho15 at 15 degC (ISO/TR 15144-1 density law)", .unit = "kg/m3", .required = true});
+  t.number("thermal_conductivity_W_per_mK", &ThermalLubricant::thermal_conductivity, Range::closed(0.01, 10.0),
+           {.description = "thermal conductivity", .unit = "W/(m*K)", .required = true});
+  t.number("specific_heat_J_per_kgK", &ThermalLubricant::specific_heat, Range::closed(100.0, 1e5),
+           {.description = "specific heat", .unit = "J/(kg*K)", .required = true});
+  t.number("viscosity_Pa_s", &ThermalLubricant::viscosity, Range::closed(1e-4, 1e4),
+           {.description = "Roelands form: dynamic viscosity eta0 at the inlet temperature (with "
+                           "temperature_viscosity_1_per_K; not with nu40_mm2_s, nu100_mm2_s)",
+            .unit = "Pa*s", .unset = 0.0});
+  t.number("temperature_viscosity_1_per_K", &ThermalLubricant::temperature_viscosity, Range::closed(0.0, 1.0),
+           {.description = "Roelands form: temperature-viscosity coefficient beta", .unit = "1/K"});
+  t.number("nu40_mm2_s", &ThermalLubricant::nu40, Range::closed(2.0, 1e6),
+           {.description = "Walther form: kinematic viscosity at 40 degC (with nu100_mm2_s)", .unit = "mm2/s",
+            .scale = 1e-6});
+  t.number("nu100_mm2_s", &ThermalLubricant::nu100, Range::closed(2.0, 1e6),
+           {.description = "Walther form: kinematic viscosity at 100 degC", .unit = "mm2/s", .scale = 1e-6});
+  t.number("eyring_stress_MPa", &ThermalLubricant::eyring_stress, Range::positive(1e3),
+           {.description = "Eyring stress tau0 (the Eyring film, and the Eyring friction beside the Newtonian)",
+            .unit = "MPa", .scale = 1e6});
+  t.after_read(check_viscosity_form);
+  return t;
+}
+
+OptionTable<ThermalSolids> make_thermal_solids_table() {
+  OptionTable<ThermalSolids> t;
+  t.number("thermal_conductivity_W_per_mK", &ThermalSolids::conductivity, Range::closed(0.1, 1e4),
+           {.description = "thermal conductivity [1, 2]", .unit = "W/(m*K)", .required = true});
+  t.number("specific_heat_J_per_kgK", &ThermalSolids::specific_heat, Range::closed(10.0, 1e5),
+           {.description = "specific heat [1, 2]", .unit = "J/(kg*K)", .required = true});
+  t.number("density_kg_m3", &ThermalSolids::density, Range::closed(100.0, 1e5),
+           {.description = "density [1, 2]", .unit = "kg/m3", .required = true});
+  return t;
+}
+
+OptionTable<LoadFactors> make_load_factors_table() {
+  OptionTable<LoadFactors> t;
+  for (const auto& [key, member, what] :
+       {std::tuple{"K_A", &LoadFactors::K_A, "application factor"}, std::tuple{"K_v", &LoadFactors::K_v, "dynamic factor"},
+        std::tuple{"K_H_alpha", &LoadFactors::K_H_alpha, "transverse load factor"},
+        std::tuple{"K_H_beta", &LoadFactors::K_H_beta, "face load factor"}})
+    t.number(key, member, Range::closed(1.0, 10.0), {.description = what});
+  return t;
+}
+
+OptionTable<ThermalPathCase> make_thermal_path_table() {
+  OptionTable<ThermalPathCase> t;
+  t.section("load_factors", &ThermalPathCase::load_factors, load_factors_table(),
+            {.description = "load factors of the normal load (ISO 6336)"});
+  add_thermal_media(t);
+  add_load_sharing(t, &ThermalPathCase::load_sharing);
+  return t;
+}
+
 }  // namespace
 
 const OptionTable<GearPair>& gear_pair_table() { return built_once<make_gear_pair_table>(); }
 const OptionTable<Material>& material_table() { return built_once<make_material_table>(); }
 const OptionTable<OperatingPoint>& operating_table() { return built_once<make_operating_table>(); }
 const OptionTable<Lubricant>& lubricant_table() { return built_once<make_lubricant_table>(); }
+const OptionTable<ThermalLubricant>& thermal_lubricant_table() { return built_once<make_thermal_lubricant_table>(); }
+const OptionTable<ThermalSolids>& thermal_solids_table() { return built_once<make_thermal_solids_table>(); }
+const OptionTable<LoadFactors>& load_factors_table() { return built_once<make_load_factors_table>(); }
+const OptionTable<ThermalPathCase>& ThermalPathCase::table() { return built_once<make_thermal_path_table>(); }
 
 }  // namespace gearbench::model
