@@ -1,7 +1,7 @@
 #include "case_schema.h"
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
+#include <stdexcept>
 
 #include "lubricant/lubricant_section.h"
 #include "model/case_reader.h"
@@ -59,8 +59,10 @@ json gear_case_schema(const std::vector<std::string>& required) {
   return {{"properties", properties}, {"required", needed}};
 }
 
-std::optional<json> kind_schema(const KindSpec& kind) {
-  if (!kind.schema_parts) return std::nullopt;
+json kind_schema(const KindSpec& kind) {
+  // Every kind reads its keys from tables (issue 21); a kind registered without them is a
+  // programming error, not a case without a schema.
+  if (!kind.schema_parts) throw std::logic_error("kind " + kind.name + " registers no schema_parts");
   std::vector<json> parts = {{{"properties",
                                {{"kind", {{"const", kind.name}}},
                                 {"description", {{"type", "string"}, {"description", "free text about the case"}}}}},
@@ -75,31 +77,21 @@ std::optional<json> kind_schema(const KindSpec& kind) {
 
 json all_kinds_schema() {
   json names = json::array(), chosen = json::array(), defs = json::object();
-  std::vector<std::string> without;
   for (const auto& [name, kind] : KindRegistry::instance().kinds()) {
     names.push_back(name);
     auto schema = kind_schema(kind);
-    if (!schema) {
-      without.push_back(name);
-      continue;
-    }
-    schema->erase("$schema");
-    defs[name] = std::move(*schema);
+    schema.erase("$schema");
+    defs[name] = std::move(schema);
     chosen.push_back({{"if", {{"properties", {{"kind", {{"const", name}}}}}, {"required", {"kind"}}}},
                       {"then", {{"$ref", "#/$defs/" + name}}}});
   }
-  json out = {{"$schema", draft},
+  return {{"$schema", draft},
               {"title", "gearbench case"},
               {"type", "object"},
               {"properties", {{"kind", {{"enum", names}, {"description", "picks the solver"}}}}},
               {"required", {"kind"}},
               {"allOf", chosen},
               {"$defs", defs}};
-  if (!without.empty())
-    out["$comment"] = fmt::format("no schema yet (keys read by hand, not from a table), so only \"kind\" is checked "
-                                  "for: {}",
-                                  fmt::join(without, ", "));
-  return out;
 }
 
 }  // namespace gearbench::app

@@ -18,11 +18,10 @@ nlohmann::json gear_case_schema(const std::vector<std::string>& required);
 /// An object schema holding one section read by `section_schema`; `required` if it must be given.
 nlohmann::json section_part(const std::string& key, nlohmann::json section_schema, bool required);
 
-/// The schema of a case of this kind; nullopt when the kind has none yet.
-std::optional<nlohmann::json> kind_schema(const KindSpec& kind);
+/// The schema of a case of this kind.
+nlohmann::json kind_schema(const KindSpec& kind);
 
-/// One schema for every kind: the kind's own schema chosen by "kind"; kinds with none are
-/// named in "$comment" and checked for "kind" alone.
+/// One schema for every kind: the kind's own schema chosen by "kind".
 nlohmann::json all_kinds_schema();
 
 }  // namespace gearbench::app

@@ -15,8 +15,7 @@ struct KindSpec {
   /// Validates the case (InputError on bad input) and returns the result as JSON.
   std::function<nlohmann::json(const nlohmann::json& case_json)> run;
   /// The object schemas of the case's keys beside "kind" and "description", made from the
-  /// tables its reader reads (case_schema.h); empty for a kind whose keys are still read by
-  /// hand, which then has no schema rather than one that could be wrong.
+  /// tables its reader reads (case_schema.h); every kind has them.
   std::function<std::vector<nlohmann::json>()> schema_parts = {};
   /// A kind whose other keys depend on one key's value (the dynamics kind's "model"): that
   /// key (declared in schema_parts) and, per value, the parts its reader then reads.
