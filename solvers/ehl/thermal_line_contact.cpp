@@ -1,5 +1,3 @@
-#include <cstdio>
-#include <cstdlib>
 #include "thermal_line_contact.h"
 
 #include <algorithm>
@@ -8,6 +6,7 @@
 #include <limits>
 #include <fmt/format.h>
 
+#include "anderson_mixing.h"
 #include "fas_multigrid.h"
 #include "model/errors.h"
 
@@ -55,6 +54,26 @@ double largest_change(const std::vector<std::vector<double>>& a, const std::vect
     for (std::size_t j = 0; j < a[i].size(); ++j) change = std::max(change, std::abs(a[i][j] - b[i][j]));
   return change;
 }
+
+/// The remaining relative error of h_min, estimated from the last iterations: a change per
+/// iteration is an error estimate only when the iteration contracts fast. With the factor
+/// residual contracting by q per iteration (the geometric mean over the last three: Anderson's
+/// steps are not monotone one by one), what is left of h_min's drift is the geometric tail
+/// d·q/(1 − q) of its largest change d over the same iterations (the largest, since h_min
+/// can turn and change little for one iteration), and never less than d. Infinite before
+/// there are four iterations or when the residual does not contract.
+double remaining_film_error(const std::vector<double>& h_min, const std::vector<double>& residuals) {
+  constexpr std::size_t span = 3;
+  const std::size_t k = residuals.size();
+  if (k <= span || h_min.size() <= span || !(residuals[k - 1 - span] > 0.0))
+    return std::numeric_limits<double>::infinity();
+  const double q = std::cbrt(residuals[k - 1] / residuals[k - 1 - span]);
+  if (!(q < 1.0)) return std::numeric_limits<double>::infinity();
+  double change = 0.0;
+  for (std::size_t i = h_min.size() - span; i < h_min.size(); ++i)
+    change = std::max(change, std::abs(h_min[i] - h_min[i - 1]) / h_min[i]);
+  return change * std::max(1.0, q / (1.0 - q));
+}
 }  // namespace
 
 ThermalEhlResult ThermalLineContact::try_solve() const {
@@ -86,9 +105,13 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
   ContactState state;
   state.flow_factor.assign(n, 1.0);
   state.wedge_factor.assign(n, 1.0);
+  // The coupling is the fixed point F = G(F) of the factors, accelerated by Anderson mixing
+  // (anderson_mixing.h) on their logarithms: ln F keeps every factor positive whatever the
+  // extrapolation, and weighs a node's change relative to its factor, which spans 1e-2 … 1e5
+  // along an Eyring film.
+  AndersonMixing anderson({.depth = options_.anderson_depth, .mixing = options_.factor_relaxation});
+  std::vector<double> log_factors(2 * n, 0.0), log_image(2 * n);
   double h_min_before = isothermal.h_min;
-  double relaxation = options_.factor_relaxation;
-  double change_before = std::numeric_limits<double>::infinity();
   bool temperature_settled = false;
   for (int it = 0; it < options_.max_iterations; ++it) {
     for (std::size_t i = 0; i < n; ++i) {
@@ -98,13 +121,22 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
     const auto before = field.film();
     field.solve(p, h, 1e-4, options_.sweeps_per_iteration);
     // Generalized-Reynolds factors relative to the isothermal coefficients at the same p.
+    bool finite = true;
     for (std::size_t i = 0; i < n; ++i) {
       const ColumnFlow flow = field.column_flow(i, p, h);
       const double rho_iso = rheology_.density(p[i], T0), eta_iso = rheology_.viscosity(p[i], T0);
-      const double flow_factor = flow.rho_over_eta_e() * eta_iso / rho_iso;
-      const double wedge_factor = flow.rho_star(data_.u1, data_.u2) / rho_iso;
-      state.flow_factor[i] += relaxation * (flow_factor - state.flow_factor[i]);
-      state.wedge_factor[i] += relaxation * (wedge_factor - state.wedge_factor[i]);
+      log_image[i] = std::log(flow.rho_over_eta_e() * eta_iso / rho_iso);
+      log_image[n + i] = std::log(flow.rho_star(data_.u1, data_.u2) / rho_iso);
+      finite = finite && std::isfinite(log_image[i]) && std::isfinite(log_image[n + i]);
+    }
+    if (!finite) break;  // a diverged temperature field: not converged
+    double residual = 0.0;
+    for (std::size_t k = 0; k < 2 * n; ++k) residual += (log_image[k] - log_factors[k]) * (log_image[k] - log_factors[k]);
+    r.factor_residual_history.push_back(std::sqrt(residual));
+    log_factors = anderson.next(log_factors, log_image);
+    for (std::size_t i = 0; i < n; ++i) {
+      state.flow_factor[i] = std::exp(log_factors[i]);
+      state.wedge_factor[i] = std::exp(log_factors[n + i]);
     }
     // A few cycles per iteration while the temperature still moves; the iteration ends only
     // on a pressure solve that met the multigrid tolerance.
@@ -115,12 +147,8 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
     r.work_units += next.work_units;
     ++r.iterations;
     const double change = largest_change(field.film(), before);
-    // A growing temperature change means the coupling overshoots: halve the relaxation.
-    if (change > change_before) relaxation = std::max(0.5 * relaxation, options_.factor_relaxation / 64.0);
-    change_before = change;
     r.temperature_change_history.push_back(change);
     r.h_min_history.push_back(next.h_min);
-    if (getenv("DBGT")) fprintf(stderr, "it %d: change %.3e rel %.3g, pressure conv %d cycles %d res %.3e factor %.3f h_min %.6e\n", it, change, relaxation, next.converged, next.cycles, next.residual_history.empty() ? -1.0 : next.residual_history.back(), next.convergence_factor, next.h_min);
     current = std::move(next);
     if (!std::isfinite(current.h_min) || current.residual_history.empty() ||
         !std::isfinite(current.residual_history.back()))
@@ -131,7 +159,8 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
     for (const auto& column : field.film())
       for (double T : column) rise = std::max(rise, T - T0);
     const double tolerance = options_.temperature_tolerance * std::max(rise, 10.0);
-    temperature_settled = it > 0 && change <= tolerance && film_change <= options_.film_tolerance;
+    temperature_settled = it > 0 && change <= tolerance && film_change <= options_.film_tolerance &&
+                          remaining_film_error(r.h_min_history, r.factor_residual_history) <= options_.film_tolerance;
     if (temperature_settled && current.converged) {
       r.converged = true;
       break;
