@@ -149,6 +149,9 @@ TEST(ThermalLineContact, RejectsBadOptions) {
   o = small_grid();
   o.factor_relaxation = 0.0;
   EXPECT_THROW(ThermalLineContact(contact(2.0, 2.0), rheology, steel(), o), InputError);
+  o = small_grid();
+  o.anderson_depth = -1;
+  EXPECT_THROW(ThermalLineContact(contact(2.0, 2.0), rheology, steel(), o), InputError);
   EXPECT_THROW(ThermalLineContact(contact(-1.0, 2.0), rheology, steel(), small_grid()).solve(), InputError);
 }
 

@@ -257,7 +257,9 @@ model::OptionTable<ThermalEhlOptions> make_thermal_tuning_table() {
   t.number("film_tolerance", &ThermalEhlOptions::film_tolerance, Range{0.0, 0.1, true, true},
            {.description = "relative change of h_min between iterations"});
   t.number("factor_relaxation", &ThermalEhlOptions::factor_relaxation, Range{0.0, 1.0, true, false},
-           {.description = "relaxation of the viscosity and density factors"});
+           {.description = "Anderson's mixing of the viscosity and density factors"});
+  t.integer("anderson_depth", &ThermalEhlOptions::anderson_depth, 0, 50,
+            {.description = "factor differences Anderson's acceleration keeps"});
   return t;
 }
 

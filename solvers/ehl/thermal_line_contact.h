@@ -8,7 +8,10 @@
 //   3. the generalized-Reynolds factors per node, (ρ/η)_e/(ρ/η)_iso and ρ*/ρ_iso at the node's
 //      pressure, frozen into the FAS multigrid, which re-solves pressure and film from the
 //      last solution;
-//   4. back to 2 until the temperature and the minimum film stop changing.
+//   4. back to 2 until the temperature and the minimum film stop changing; the factors are
+//      the fixed point F = G(F) of steps 2–3, accelerated by Anderson mixing on ln F
+//      (anderson_mixing.h), and the stop estimates h_min's remaining error from the observed
+//      contraction.
 // At the fixed point the factors are those of the converged temperature and pressure, so the
 // solution is the coupled one; freezing them only changes the path to it. Temperature lives
 // on the finest pressure grid (the coarse grids inject its factors), a simplification of
