@@ -74,16 +74,14 @@ ehl::EhlOptions EhlFriction::default_grid() {
 }
 
 ehl::ThermalEhlOptions EhlFriction::default_thermal_options() {
-  // Measured on seed 004's path (cases/efficiency_seed004_ehl_thermal.json): with the thermal
-  // solver's own defaults (ω 0.7, h_min settled to 1e-5) its Ree–Eyring film at the contacts
-  // near A does not settle in 60 iterations at 161 nodes (h_min creeps by 3e-5 a step once the
-  // relaxation has been halved) and its temperature diverges at 321 and 641 nodes. With ω 0.15
-  // every contact of the path settles; h_min to 1e-3 moves μ by 2e-4 relative (the traction is
-  // an integral of the wall stress), and 81 nodes give the mean μ within 0.8 % of 161 nodes
-  // (0.05795 against 0.05751) at a quarter of the cost.
+  // Measured on seed 004's path (cases/efficiency_seed004_ehl_thermal.json): h_min settled to
+  // 1e-3 moves μ by 2e-4 relative (the traction is an integral of the wall stress), and 81 nodes
+  // give the mean μ within 0.8 % of 161 nodes (0.05795 against 0.05751) at a quarter of the cost.
+  // The coupling is the thermal solver's own (Anderson, β 0.3, depth 5): the β 0.15 that the
+  // earlier halving relaxation needed here leaves a contact of the dynamics test (M 11.6, L 19)
+  // with a non-finite temperature under Anderson (twelfth session).
   ehl::ThermalEhlOptions o;
   o.grid.nodes = 81;
-  o.factor_relaxation = 0.15;
   o.film_tolerance = 1e-3;
   o.max_iterations = 300;
   return o;
