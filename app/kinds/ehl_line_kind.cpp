@@ -109,9 +109,7 @@ json run_ehl_line(const json& case_json) {
   const ehl::LineContactProblem problem(data);
   const auto r = ehl::LineContactSolver(problem, options).try_solve();
   auto out = result_json(problem, r);
-  out["converged"] = r.converged;
-  out["message"] = r.message;
-  out["summary"] = r.summary();
+  add_solve_status(out, r);
   add_options_record(out, ehl::EhlOptions::table(), options, ehl::grid_used(options, r));
   json notes = json::array();
   if (moes)
@@ -132,8 +130,7 @@ json run_ehl_line(const json& case_json) {
     out["friction_coefficient"] = nullptr;
   }
   if (!notes.empty()) out["notes"] = notes;
-  if (!r.converged)
-    throw ConvergenceError(r.message, out.dump(2));
+  throw_unless_converged(r, out);
   return out;
 }
 

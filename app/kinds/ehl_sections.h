@@ -8,6 +8,7 @@
 #include "ehl/ehl_tables.h"
 #include "ehl/line_contact_solver.h"
 #include "model/case_reader.h"
+#include "model/errors.h"
 #include "model/json_reader.h"
 
 namespace gearbench::app {
@@ -49,6 +50,24 @@ template <class O>
 void add_options_record(nlohmann::json& out, const model::OptionTable<O>& table, const O& given, const O& used) {
   out["options_given"] = table.to_json(given);
   out["options_used"] = table.to_json(used);
+}
+
+/// How a solve ended, written the same way by every kind at the top level of its result:
+/// "converged" (bool), "message" (what stopped the solve, one sentence) and "summary" (the
+/// Result's summary(), which the CLI prints on stderr). `Result` has converged, message and
+/// summary() (model::SolveStatus and its summary; EhlResult alike).
+template <class Result>
+void add_solve_status(nlohmann::json& out, const Result& r) {
+  out["converged"] = r.converged;
+  out["message"] = r.message;
+  out["summary"] = r.summary();
+}
+
+/// A solve that did not converge: ConvergenceError with its message and `out` as the
+/// diagnostics (exit 3, the JSON still written to -o).
+template <class Result>
+void throw_unless_converged(const Result& r, const nlohmann::json& out) {
+  if (!r.converged) throw ConvergenceError(r.message, out.dump(2));
 }
 
 /// Non-finite numbers become null.

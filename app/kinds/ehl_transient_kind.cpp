@@ -68,9 +68,6 @@ json result_json(const ehl::TransientMeshResult& r) {
 /// lubricant: the solver's options and the film's rheology.
 using TransientCase = GearFluidCase<ehl::TransientMeshOptions>;
 
-/// The last entry of a history (0 for an empty one: the step failed before its first cycle).
-double last_or_zero(const std::vector<double>& v) { return v.empty() ? 0.0 : v.back(); }
-
 json run_ehl_transient(const json& case_json) {
   model::ObjectReader root(case_json, "");
   root.string("kind");
@@ -87,16 +84,9 @@ json run_ehl_transient(const json& case_json) {
   const geometry::GearPairGeometry geometry(gear_case.gear_pair);
   const auto r = ehl::TransientMeshEhl(geometry, *gear_case.operating, fluid, options).run();
   auto out = result_json(r);
-  out["converged"] = r.converged;
-  out["summary"] = r.summary();
+  add_solve_status(out, r);
   add_options_record(out, ehl::TransientMeshOptions::table(), options, options);
-  if (!r.converged)
-    throw ConvergenceError(
-        fmt::format("transient EHL: time step {} of {} did not converge in {} cycles (scaled residual {:.3e}, force "
-                    "balance {:.3e}; both must be below {:.1e})",
-                    r.failed_step, options.steps, r.failed_residual_history.size(), last_or_zero(r.failed_residual_history),
-                    last_or_zero(r.failed_force_history), options.grid.tolerance),
-        out.dump(2));
+  throw_unless_converged(r, out);
   return out;
 }
 

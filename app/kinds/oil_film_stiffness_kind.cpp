@@ -138,9 +138,14 @@ json run_double_involute(model::ObjectReader& root, const model::GearCase& gear_
 
   const geometry::GearPairGeometry geometry(gear_case.gear_pair);
   const geometry::DoubleInvolutePair stepped(geometry, rack), ordinary(geometry, {});
-  const auto rs = ehl::MeshPeriodOilFilm(stepped, *gear_case.operating, fluid, options).solve();
-  const auto ro = ehl::MeshPeriodOilFilm(ordinary, *gear_case.operating, fluid, options).solve();
-  return {{"kind", "oil_film_stiffness"},
+  const auto rs = ehl::MeshPeriodOilFilm(stepped, *gear_case.operating, fluid, options).try_solve();
+  const auto ro = ehl::MeshPeriodOilFilm(ordinary, *gear_case.operating, fluid, options).try_solve();
+  // Both pairs' solves, as one status: converged when both are, the message of the one that is not.
+  model::SolveStatus status;
+  if (!rs.converged) status.fail("double involute: " + rs.message);
+  else if (!ro.converged) status.fail("involute: " + ro.message);
+  else status.succeed("converged: the double-involute and the involute pair (" + rs.message + ")");
+  json out = {{"kind", "oil_film_stiffness"},
           {"tooth_form", "double_involute"},
           {"perturbation", options.perturbation},
           {"mesh_period_s", rs.period},
@@ -153,9 +158,13 @@ json run_double_involute(model::ObjectReader& root, const model::GearCase& gear_
                                  "stiffness is ∫k_oil dl along its contact line",
                                  "involute: the ordinary pair with the same gear data (a zero step)"})},
           {"diagnostics", {{"seconds", rs.seconds + ro.seconds}, {"ehl_solves", rs.solves + ro.solves}}},
-          {"summary", "double involute: " + rs.summary() + "; involute: " + ro.summary()},
           {"options_given", ehl::MeshPeriodOilFilmOptions::table().to_json(options)},
           {"options_used", ehl::MeshPeriodOilFilmOptions::table().to_json(options)}};
+  out["converged"] = status.converged;
+  out["message"] = status.message;
+  out["summary"] = "double involute: " + rs.summary() + "; involute: " + ro.summary();
+  throw_unless_converged(status, out);
+  return out;
 }
 
 json run_oil_film_stiffness(const json& case_json) {
@@ -174,17 +183,19 @@ json run_oil_film_stiffness(const json& case_json) {
   const auto& fluid = k.fluid;
 
   const geometry::GearPairGeometry geometry(gear_case.gear_pair);
-  const auto r = ehl::OilFilmStiffness(geometry, *gear_case.materials, *gear_case.operating, fluid, options).solve();
-  return {{"kind", "oil_film_stiffness"},
+  const auto r = ehl::OilFilmStiffness(geometry, *gear_case.materials, *gear_case.operating, fluid, options).try_solve();
+  json out = {{"kind", "oil_film_stiffness"},
           {"face_width_m", r.face_width},
           {"perturbation", options.perturbation},
           {"points", points_json(r)},
           {"notes", json::array({"k_oil = −Δw/Δh_c by a central difference at loads w(1 ± perturbation)",
                                  "stiffness_with_film: the pair stiffness and b·k_oil in series"})},
           {"diagnostics", {{"seconds", r.seconds}}},
-          {"summary", r.summary()},
           {"options_given", ehl::OilFilmStiffnessOptions::table().to_json(options)},
           {"options_used", ehl::OilFilmStiffnessOptions::table().to_json(options)}};
+  add_solve_status(out, r);
+  throw_unless_converged(r, out);
+  return out;
 }
 
 std::vector<json> oil_film_schema() {

@@ -58,13 +58,8 @@ json with_named_lubricant(json schema) {
 
 /// Options record, convergence and summary of one thermal contact.
 void add_run_record(json& out, const ehl::ThermalEhlOptions& options, const ehl::ThermalEhlResult& r) {
-  out["converged"] = r.converged;
-  out["summary"] = r.summary();
+  add_solve_status(out, r);
   add_options_record(out, ehl::ThermalEhlOptions::table(), options, options);
-}
-
-ConvergenceError not_converged(const ehl::ThermalEhlResult& r, const json& out) {
-  return ConvergenceError(fmt::format("thermal EHL did not converge: {}", r.summary()), out.dump(2));
 }
 
 json run_tehl_point(const json& case_json) {
@@ -90,7 +85,7 @@ json run_tehl_point(const json& case_json) {
   out["inlet_viscosity_Pa_s"] = rheology.inlet_viscosity();
   out["roelands_z"] = rheology.roelands_z();
   add_run_record(out, options, r);
-  if (!r.converged) throw not_converged(r, out);
+  throw_unless_converged(r, out);
   return out;
 }
 
@@ -112,7 +107,7 @@ json run_tehl_path(const json& case_json) {
   const lubricant::ThermalRheology rheology(c.lubricant, c.inlet_temperature);
   const ehl::ThermalMeshPath path(geometry, c.operating, c.materials, rheology, c.solids, c.load_factors,
                                   c.load_sharing, options);
-  const auto result = path.run([](const std::string& line) { std::cerr << "gearbench: " << line << std::endl; });
+  const auto result = path.try_run([](const std::string& line) { std::cerr << "gearbench: " << line << std::endl; });
   json points = json::array();
   for (const auto& pt : result.points) {
     json p = thermal_result_json(pt.result, pt.name == "A" || pt.name == "C");
@@ -135,7 +130,9 @@ json run_tehl_path(const json& case_json) {
           {"minimum_film_point", result.points[static_cast<std::size_t>(result.minimum_film_point)].name},
           {"points", points},
           {"seconds", result.seconds}};
+  add_solve_status(out, result);
   add_options_record(out, ehl::ThermalEhlOptions::table(), options, options);
+  throw_unless_converged(result, out);
   if (micropitting) out["micropitting"] = micropitting_json(compare_with_iso(result, c, *micropitting, options));
   return out;
 }

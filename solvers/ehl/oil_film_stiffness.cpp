@@ -100,6 +100,12 @@ EhlResult OilFilmStiffness::solve_contact(const LineContactData& d, double s) co
 }
 
 OilFilmStiffnessResult OilFilmStiffness::solve() const {
+  auto r = try_solve();
+  if (!r.converged) throw ConvergenceError(r.message);
+  return r;
+}
+
+OilFilmStiffnessResult OilFilmStiffness::try_solve() const {
   const auto start = std::chrono::steady_clock::now();
   const auto sharing = geometry::make_load_sharing(options_.load_sharing, "load_sharing");
   const stiffness::PairStiffness pair(geometry_, materials_, stiffness::ToothModel{},
@@ -112,7 +118,7 @@ OilFilmStiffnessResult OilFilmStiffness::solve() const {
 
   OilFilmStiffnessResult out;
   out.face_width = b;
-  for (int i = 0; i < options_.positions; ++i) {
+  for (int i = 0; i < options_.positions; ++i) try {
     // Cell centres: half a step inside A and E, where the pair still carries load (one
     // position is the middle of the path).
     const double t = (i + 0.5) / options_.positions;
@@ -142,7 +148,14 @@ OilFilmStiffnessResult OilFilmStiffness::solve() const {
     p.film_load_exponent = std::log(rp.h_dpdx0 / rm.h_dpdx0) / std::log((1.0 + delta) / (1.0 - delta));
     p.cycles = r0.cycles + rp.cycles + rm.cycles;
     out.points.push_back(p);
+  } catch (const ConvergenceError& e) {
+    out.fail(fmt::format("position {} of {}: {}", i + 1, options_.positions, e.what()));
+    break;
   }
+  if (out.message.empty())
+    out.succeed(fmt::format("converged: the EHL solves at all {} positions met grid.tolerance = {:.1e} within "
+                            "grid.max_cycles = {}", options_.positions, options_.grid.tolerance,
+                            options_.grid.max_cycles));
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
@@ -171,6 +184,12 @@ MeshPeriodOilFilm::FilmPoint MeshPeriodOilFilm::film_at(double s, double load_pe
 }
 
 MeshPeriodOilFilmResult MeshPeriodOilFilm::solve() const {
+  auto r = try_solve();
+  if (!r.converged) throw ConvergenceError(r.message);
+  return r;
+}
+
+MeshPeriodOilFilmResult MeshPeriodOilFilm::try_solve() const {
   const auto start = std::chrono::steady_clock::now();
   const auto& g = pair_.geometry();
   const double beta_b = g.base_helix_angle();
@@ -184,7 +203,7 @@ MeshPeriodOilFilmResult MeshPeriodOilFilm::solve() const {
 
   MeshPeriodOilFilmResult out;
   out.period = pair_.mesh_period(operating_.pinion_speed);
-  for (int i = 0; i < options_.samples; ++i) {
+  for (int i = 0; i < options_.samples; ++i) try {
     MeshInstant m;
     m.travel = (i + 0.5) / options_.samples * pb;
     m.time = m.travel / (operating_.pinion_speed * g.radii(0).base);
@@ -223,7 +242,14 @@ MeshPeriodOilFilmResult MeshPeriodOilFilm::solve() const {
     }
     out.mean_film_stiffness += m.film_stiffness / options_.samples;
     out.instants.push_back(m);
+  } catch (const ConvergenceError& e) {
+    out.fail(fmt::format("instant {} of {}: {}", i + 1, options_.samples, e.what()));
+    break;
   }
+  if (out.message.empty())
+    out.succeed(fmt::format("converged: the {} EHL solves at {} instants met grid.tolerance = {:.1e} within "
+                            "grid.max_cycles = {}", out.solves, options_.samples, options_.grid.tolerance,
+                            options_.grid.max_cycles));
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

@@ -13,6 +13,7 @@
 #include "geometry/gear_pair_geometry.h"
 #include "line_contact_solver.h"
 #include "model/materials.h"
+#include "model/solve_status.h"
 
 namespace gearbench::ehl {
 
@@ -47,7 +48,8 @@ struct OilFilmPoint {
   int cycles = 0;                     ///< multigrid cycles of the three solves
 };
 
-struct OilFilmStiffnessResult {
+/// converged and message: model::SolveStatus (the position whose EHL solves failed named).
+struct OilFilmStiffnessResult : model::SolveStatus {
   std::vector<OilFilmPoint> points;
   double face_width = 0.0;
   double seconds = 0.0;
@@ -64,6 +66,9 @@ class OilFilmStiffness {
                    OilFilmStiffnessOptions options);
   /// Throws ConvergenceError naming the position whose EHL solve did not converge.
   [[nodiscard]] OilFilmStiffnessResult solve() const;
+  /// The same, returning converged = false, the message and the positions solved before the
+  /// failure instead of throwing.
+  [[nodiscard]] OilFilmStiffnessResult try_solve() const;
 
  private:
   [[nodiscard]] LineContactData contact_at(double s, double load_per_length) const;
@@ -111,7 +116,8 @@ struct MeshInstant {
   int pairs = 0;                      ///< pairs in contact
 };
 
-struct MeshPeriodOilFilmResult {
+/// converged and message: model::SolveStatus (the instant and position whose EHL solves failed named).
+struct MeshPeriodOilFilmResult : model::SolveStatus {
   std::vector<MeshInstant> instants;
   double period = 0.0;                ///< [s]
   double mean_film_stiffness = 0.0;   ///< over the instants [N/m]
@@ -128,6 +134,9 @@ class MeshPeriodOilFilm {
                     const LineContactData& fluid, MeshPeriodOilFilmOptions options);
   /// Throws ConvergenceError naming the position whose EHL solve did not converge.
   [[nodiscard]] MeshPeriodOilFilmResult solve() const;
+  /// The same, returning converged = false, the message and the instants solved before the
+  /// failure instead of throwing.
+  [[nodiscard]] MeshPeriodOilFilmResult try_solve() const;
 
  private:
   struct FilmPoint {

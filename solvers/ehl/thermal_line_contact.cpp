@@ -89,6 +89,7 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
   r.pressure_cycles = isothermal.cycles;
   r.work_units = isothermal.work_units;
   if (!isothermal.converged) {  // the start did not converge: a status, not an exception (issue 21)
+    r.fail("thermal EHL: the isothermal start did not converge: " + isothermal.message);
     r.pressure = isothermal;
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
@@ -162,9 +163,22 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
     temperature_settled = it > 0 && change <= tolerance && film_change <= options_.film_tolerance &&
                           remaining_film_error(r.h_min_history, r.factor_residual_history) <= options_.film_tolerance;
     if (temperature_settled && current.converged) {
-      r.converged = true;
+      r.succeed(fmt::format("converged: the temperature and h_min settled in {} thermal iterations "
+                            "(temperature_tolerance {:.1e}, film_tolerance {:.1e}) and the last pressure solve met "
+                            "grid.tolerance", r.iterations, options_.temperature_tolerance, options_.film_tolerance));
       break;
     }
+  }
+  if (!r.converged) {
+    const double change = r.temperature_change_history.empty() ? 0.0 : r.temperature_change_history.back();
+    if (r.iterations >= options_.max_iterations)
+      r.fail(fmt::format("thermal EHL: the thermal iteration did not converge in max_iterations = {} iterations "
+                         "(last temperature change {:.3e} K, relative tolerance {:.1e}; last pressure solve {})",
+                         r.iterations, change, options_.temperature_tolerance,
+                         current.converged ? "converged" : "NOT converged"));
+    else
+      r.fail(fmt::format("thermal EHL: the thermal iteration diverged after {} iterations (a non-finite "
+                         "temperature, factor or film; last temperature change {:.3e} K)", r.iterations, change));
   }
   for (std::size_t i = 0; i < n; ++i) {
     p[i] = current.P[i] * ps;

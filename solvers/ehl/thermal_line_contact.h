@@ -27,6 +27,7 @@
 
 #include "film_temperature.h"
 #include "line_contact_solver.h"
+#include "model/solve_status.h"
 
 namespace gearbench::ehl {
 
@@ -63,7 +64,8 @@ struct ThermalEhlOptions {
   void validate() const;               ///< InputError naming the key
 };
 
-struct ThermalEhlResult {
+/// converged and message: model::SolveStatus (the iteration or the isothermal start that stopped).
+struct ThermalEhlResult : model::SolveStatus {
   lubricant::ShearRheology rheology = lubricant::ShearRheology::newtonian;  ///< of the film solved
   // Figures (SI).
   double h_central = 0.0, h_min = 0.0, x_h_min = 0.0, p_max = 0.0;
@@ -82,7 +84,6 @@ struct ThermalEhlResult {
   std::vector<std::vector<double>> film_temperature;                ///< [i][j]
   std::array<std::vector<std::vector<double>>, 2> solid_temperature; ///< [body][i][k]
   // Diagnostics.
-  bool converged = false;
   int iterations = 0;
   std::vector<double> temperature_change_history;  ///< [K] per iteration
   std::vector<double> h_min_history;                ///< [m] per iteration

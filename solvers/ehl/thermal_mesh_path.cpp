@@ -53,7 +53,7 @@ std::vector<ThermalPathPoint> ThermalMeshPath::contacts() const {
   return points;
 }
 
-void ThermalMeshPath::solve(ThermalPathPoint& pt) const {
+std::string ThermalMeshPath::attempt(ThermalPathPoint& pt) const {
   const ThermalLineContact contact(pt.contact, rheology_, solids_, options_);
   const auto& d = contact.isothermal_data();
   const std::string where = fmt::format(
@@ -63,10 +63,25 @@ void ThermalMeshPath::solve(ThermalPathPoint& pt) const {
   try {
     pt.result = contact.try_solve();
   } catch (const ConvergenceError& e) {
-    throw ConvergenceError(fmt::format("{}: {}", where, e.what()), e.diagnostics);
+    pt.result.fail(e.what());
+    return fmt::format("{}: {}", where, e.what());
   }
   if (!pt.result.converged)
-    throw ConvergenceError(fmt::format("thermal EHL at {} did not converge: {}", where, pt.result.summary()));
+    return fmt::format("thermal EHL at {} did not converge: {}", where, pt.result.message);
+  return {};
+}
+
+void ThermalMeshPath::solve(ThermalPathPoint& pt) const {
+  if (auto failure = attempt(pt); !failure.empty()) throw ConvergenceError(failure);
+}
+
+std::string ThermalPathResult::summary() const {
+  int iterations = 0;
+  for (const auto& pt : points) iterations += pt.result.iterations;
+  const auto& thinnest = points.empty() ? ThermalPathPoint{} : points[static_cast<std::size_t>(minimum_film_point)];
+  return fmt::format("{} points, {} thermal iterations, {:.2f} s; smallest h_min {:.4e} m at {}{}", points.size(),
+                     iterations, seconds, thinnest.result.h_min, thinnest.name,
+                     converged ? "" : fmt::format(" (point {} did not converge)", points.back().name));
 }
 
 ThermalPathPoint ThermalMeshPath::solve_point(const std::string& name) const {
@@ -79,17 +94,30 @@ ThermalPathPoint ThermalMeshPath::solve_point(const std::string& name) const {
 }
 
 ThermalPathResult ThermalMeshPath::run(const std::function<void(const std::string&)>& progress) const {
+  auto out = try_run(progress);
+  if (!out.converged) throw ConvergenceError(out.message);
+  return out;
+}
+
+ThermalPathResult ThermalMeshPath::try_run(const std::function<void(const std::string&)>& progress) const {
   const auto start = std::chrono::steady_clock::now();
   ThermalPathResult out;
   out.points = contacts();
   for (auto& pt : out.points) {
-    solve(pt);
+    if (auto failure = attempt(pt); !failure.empty()) {
+      out.points.resize(static_cast<std::size_t>(&pt - out.points.data()) + 1);  // up to the failed point
+      out.fail(std::move(failure));
+      break;
+    }
     if (progress)
       progress(fmt::format("thermal EHL point {} ({}/{}): h_min {:.4f} µm, film temperature rise {:.2f} K, {} "
                            "iterations, {:.2f} s", pt.name, &pt - out.points.data() + 1, out.points.size(),
                            pt.result.h_min * 1e6, pt.result.temperature_rise_max, pt.result.iterations,
                            pt.result.seconds));
   }
+  if (out.message.empty())
+    out.succeed(fmt::format("converged: the thermal EHL at all {} points of the path (A, AB, B, C, D, DE, E) "
+                            "converged", out.points.size()));
   for (std::size_t i = 1; i < out.points.size(); ++i)
     if (out.points[i].result.h_min < out.points[static_cast<std::size_t>(out.minimum_film_point)].result.h_min)
       out.minimum_film_point = static_cast<int>(i);

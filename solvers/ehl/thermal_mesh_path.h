@@ -29,10 +29,12 @@ struct ThermalPathPoint {
   ThermalEhlResult result;
 };
 
-struct ThermalPathResult {
-  std::vector<ThermalPathPoint> points;
+/// converged and message: model::SolveStatus (the point that did not converge named).
+struct ThermalPathResult : model::SolveStatus {
+  std::vector<ThermalPathPoint> points;  ///< all seven, or those up to and including a failed one
   double seconds = 0.0;
   int minimum_film_point = 0;       ///< index of the smallest h_min
+  [[nodiscard]] std::string summary() const;
 };
 
 class ThermalMeshPath {
@@ -49,6 +51,9 @@ class ThermalMeshPath {
   /// Solves every point; throws ConvergenceError naming the point that failed. `progress`
   /// gets one line per solved point.
   [[nodiscard]] ThermalPathResult run(const std::function<void(const std::string&)>& progress = {}) const;
+  /// The same, returning converged = false, the message naming the point, and the points up to
+  /// and including it instead of throwing.
+  [[nodiscard]] ThermalPathResult try_run(const std::function<void(const std::string&)>& progress = {}) const;
 
  private:
   const geometry::GearPairGeometry& geometry_;
@@ -61,6 +66,8 @@ class ThermalMeshPath {
   ThermalEhlOptions options_;
 
   void solve(ThermalPathPoint& pt) const;
+  /// Solves `pt`; "" when it converged, else the sentence naming it and what did not converge.
+  [[nodiscard]] std::string attempt(ThermalPathPoint& pt) const;
 };
 
 }  // namespace gearbench::ehl

@@ -136,10 +136,14 @@ TransientMeshResult TransientMeshEhl::run() const {
     out.total_cycles += r.cycles;
     out.work_units += r.work_units;
     if (!r.converged) {
-      out.converged = false;
       out.failed_step = n;
       out.failed_residual_history = r.residual_history;
       out.failed_force_history = r.force_history;
+      const auto last = [](const std::vector<double>& v) { return v.empty() ? 0.0 : v.back(); };
+      out.fail(fmt::format("transient EHL: time step {} of {} did not converge in {} cycles (grid.max_cycles = {}; "
+                           "scaled residual {:.3e}, force balance {:.3e}; both must be below grid.tolerance = {:.1e})",
+                           n, options_.steps, r.residual_history.size(), options_.grid.max_cycles,
+                           last(r.residual_history), last(r.force_history), options_.grid.tolerance));
       break;
     }
     rho_h_old = mg.rho_h();
@@ -167,6 +171,10 @@ TransientMeshResult TransientMeshEhl::run() const {
     out.h_central_min = hc_lo->h_central;
     out.h_central_max = hc_hi->h_central;
   }
+  if (out.failed_step < 0)
+    out.succeed(fmt::format("converged: all {} time steps from A to E met grid.tolerance = {:.1e} within "
+                            "grid.max_cycles = {}", options_.steps + 1, options_.grid.tolerance,
+                            options_.grid.max_cycles));
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

@@ -15,6 +15,7 @@
 #include "geometry/gear_pair_geometry.h"
 #include "line_contact_solver.h"
 #include "model/materials.h"
+#include "model/solve_status.h"
 
 namespace gearbench::ehl {
 
@@ -55,7 +56,8 @@ struct TransientMeshProfile {
   std::vector<double> h;          ///< [m]
 };
 
-struct TransientMeshResult {
+/// converged and message: model::SolveStatus (the failed step named in the message).
+struct TransientMeshResult : model::SolveStatus {
   std::vector<TransientMeshStep> steps;
   std::vector<TransientMeshProfile> profiles;
   // The reference contact (pitch point, full load).
@@ -68,7 +70,6 @@ struct TransientMeshResult {
   double h_min = 0.0, h_min_position = 0.0;
   double h_central_min = 0.0, h_central_max = 0.0;
   // Diagnostics.
-  bool converged = true;
   int failed_step = -1;                ///< first step that missed the tolerance
   std::vector<double> failed_residual_history;
   std::vector<double> failed_force_history;  ///< |∫P dX − F|/F per cycle of that step
