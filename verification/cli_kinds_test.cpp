@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -570,6 +571,111 @@ TEST(Cli, EfficiencyRefusesALossAboveTheInput) {
                         "the rolling loss (2.09e+04 W mean) exceeds the input power with a film of");
 }
 
+// Issue 21: every kind's result carries "converged" (bool), "message" (one sentence: what
+// stopped the solve) and "summary" (the line the CLI prints on stderr) at the top level; a forced
+// non-convergence gives converged false, a message naming what did not converge, and exit 3 with
+// the result written to -o.
+void expect_solve_status(const json& r, bool converged, const std::string& message_part) {
+  ASSERT_TRUE(r.contains("converged") && r["converged"].is_boolean()) << r.dump().substr(0, 300);
+  ASSERT_TRUE(r.contains("message") && r["message"].is_string());
+  ASSERT_TRUE(r.contains("summary") && r["summary"].is_string());
+  EXPECT_EQ(r["converged"].get<bool>(), converged) << r["message"];
+  EXPECT_FALSE(r["summary"].get<std::string>().empty());
+  EXPECT_NE(r["message"].get<std::string>().find(message_part), std::string::npos) << r["message"];
+}
+
+/// Runs `c` with -o; the exit code, stderr and the result written.
+struct StatusRun {
+  int exit_code;
+  std::string err;
+  json result;
+};
+StatusRun run_to_file(const std::string& name, const json& c) {
+  const auto out = temp_path(name + ".json").string();
+  const auto o = run_gearbench("run " + write_case(name, c.dump()) + " -o " + out);
+  std::ifstream in(out);
+  StatusRun r{o.exit_code, o.err, json::parse(in)};
+  fs::remove(out);
+  return r;
+}
+
+/// Runs `c`: it converges (exit 0, the status with `ok_part`, its summary on stderr); then with
+/// `force` applied it does not (exit 3, the status with `fail_part`, the message on stderr).
+StatusRun expect_converges_then_fails(const std::string& name, json c, const std::string& ok_part,
+                                      const std::function<void(json&)>& force, const std::string& fail_part) {
+  const auto ok = run_to_file(name, c);
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  expect_solve_status(ok.result, true, ok_part);
+  EXPECT_NE(ok.err.find("gearbench: " + ok.result.value("summary", std::string("?"))), std::string::npos) << ok.err;
+  force(c);
+  auto failed = run_to_file(name + "_forced", c);
+  EXPECT_EQ(failed.exit_code, 3) << failed.err;
+  expect_solve_status(failed.result, false, fail_part);
+  EXPECT_NE(failed.err.find(failed.result.value("message", std::string("?"))), std::string::npos) << failed.err;
+  return failed;
+}
+
+/// One cycle to a residual of 1e-12: no EHL solve gets there.
+void one_cycle(json& c) {
+  c["grid"]["max_cycles"] = 1;
+  c["grid"]["tolerance"] = 1e-12;
+}
+
+TEST(Cli, EhlTransientResultCarriesConvergedMessageAndSummary) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed004_transient_ehl.json");
+  auto small = json::parse(in);
+  small["time_steps"] = 4;
+  small["grid"] = {{"nodes", 161}};
+  const auto failed = expect_converges_then_fails("status_transient", small, "converged: all 5 time steps",
+                                                  one_cycle, "time step 0 of 4 did not converge");
+  EXPECT_FALSE(failed.result["diagnostics"]["converged"].get<bool>());  // the old key stays
+}
+
+TEST(Cli, OilFilmStiffnessResultCarriesConvergedMessageAndSummary) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/oil_film_stiffness_spur.json");
+  auto small = json::parse(in);
+  small["positions"] = 1;
+  small["grid"] = {{"nodes", 161}};
+  const auto failed =
+      expect_converges_then_fails("status_oil_film", small, "converged: the EHL solves at all 1 positions", one_cycle,
+                                  "position 1 of 1: oil-film stiffness: the EHL solve at s =");
+  EXPECT_NE(failed.result["message"].get<std::string>().find("did not converge in 1 cycles"), std::string::npos);
+}
+
+TEST(Cli, OilFilmStiffnessDoubleInvoluteResultCarriesConvergedMessageAndSummary) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed002_double_involute_oil_film.json");
+  auto small = json::parse(in);
+  small["mesh_samples"] = 1;
+  small["points_per_piece"] = 1;
+  small["grid"] = {{"nodes", 161}};
+  one_cycle(small);
+  const auto failed = run_to_file("status_double_involute_stuck", small);
+  EXPECT_EQ(failed.exit_code, 3) << failed.err;
+  expect_solve_status(failed.result, false, "double involute: instant 1 of 1:");
+}
+
+TEST(Cli, ThermalPointResultCarriesConvergedMessageAndSummary) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/tehl_point_sliding.json");
+  auto point = json::parse(in);
+  point["grid"] = {{"nodes", 161}};
+  expect_converges_then_fails("status_tehl_point", point, "converged: the temperature and h_min settled",
+                              [](json& c) { c["thermal"] = {{"max_iterations", 1}}; },
+                              "did not converge in max_iterations = 1 iterations");
+}
+
+TEST(Cli, ThermalPathResultCarriesConvergedMessageAndSummary) {
+  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed001_tehl_path.json");
+  auto path = json::parse(in);
+  path["grid"] = {{"nodes", 161}};
+  path.erase("micropitting");
+  path["thermal"]["max_iterations"] = 1;  // point A cannot settle in one iteration
+  const auto failed = run_to_file("status_tehl_path_capped", path);
+  EXPECT_EQ(failed.exit_code, 3) << failed.err;
+  expect_solve_status(failed.result, false, "thermal EHL at point A of the path");
+  EXPECT_NE(failed.result["message"].get<std::string>().find("max_iterations = 1"), std::string::npos);
+  EXPECT_EQ(failed.result["points"].size(), 1u);  // the points up to the one that failed
+}
+
 // Thermal EHL: a point contact and the seed 001 path run on small grids (161 nodes); bad
 // input exits 2 naming the key; an iteration cap that is too small exits 3 with the
 // diagnostics in -o.
@@ -614,6 +720,9 @@ TEST(Cli, ThermalEhlRunsAndValidates) {
   EXPECT_EQ(rp["points"].size(), 7u);
   EXPECT_EQ(rp["minimum_film_point"], "A");
   EXPECT_NE(p.err.find("thermal EHL point E (7/7)"), std::string::npos) << p.err;
+  // Issue 21: the path's own status beside each point's diagnostics.
+  expect_solve_status(rp, true, "converged: the thermal EHL at all 7 points");
+  EXPECT_NE(p.err.find("gearbench: " + rp["summary"].get<std::string>()), std::string::npos) << p.err;
 }
 
 }  // namespace
