@@ -24,6 +24,7 @@
 
 #include "line_contact_problem.h"
 #include "model/option_table.h"
+#include "model/solve_status.h"
 
 namespace gearbench::ehl {
 
@@ -91,7 +92,8 @@ struct EhlOptions {
   [[nodiscard]] std::string describe() const;
 };
 
-struct EhlResult {
+/// converged and message: model::SolveStatus.
+struct EhlResult : model::SolveStatus {
   // Dimensionless solution on the finest grid.
   std::vector<double> X, P, H;
   double H0 = 0.0;
@@ -104,8 +106,6 @@ struct EhlResult {
   double friction_force = 0.0;        ///< per unit length, Newtonian [N/m]
   double friction_coefficient = 0.0;
   // Diagnostics.
-  bool converged = false;
-  std::string message;      ///< what stopped the solve, in a sentence
   std::string scheme;       ///< the options used (EhlOptions::describe)
   std::string stop_rule;    ///< the rule that accepted (or would have accepted) the solve
   int levels = 0;           ///< grid levels used
