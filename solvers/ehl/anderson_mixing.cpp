@@ -40,6 +40,11 @@ std::vector<double> AndersonMixing::next(const std::vector<double>& x_in, const 
   Eigen::VectorXd step = beta * f;
   while (!dx_.empty()) {
     const auto m = static_cast<Eigen::Index>(df_.size());
+    if (m > size) {  // more differences than unknowns: the least squares is rank-deficient
+      dx_.pop_front();
+      df_.pop_front();
+      continue;
+    }
     Eigen::MatrixXd dF(size, m), dX(size, m);
     for (Eigen::Index c = 0; c < m; ++c) {
       dF.col(c) = df_[static_cast<std::size_t>(c)];

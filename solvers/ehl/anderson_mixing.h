@@ -23,7 +23,7 @@
 namespace gearbench::ehl {
 
 struct AndersonOptions {
-  int depth = 5;                 ///< m: differences kept
+  int depth = 5;                 ///< m: differences kept (at most as many as unknowns)
   double mixing = 1.0;           ///< β
   double max_condition = 1e8;    ///< bound on |R_00|/|R_kk| of ΔF's QR before the oldest column goes
   double restart_growth = 10.0;  ///< ‖f‖ above this × the smallest since the restart clears the history
