@@ -34,8 +34,9 @@ model::OptionTable<EhlOptions> make_tuning_table() {
   t.integer("line_band", &EhlOptions::line_band, 1, 16, {.description = "half-bandwidth of a Jacobi line's Jacobian"});
   t.number("change_limit", &EhlOptions::change_limit, Range{0.0, 10.0, true, false},
            {.description = "largest |d ln eps| of one change of P"});
-  t.integer("spike_window", &EhlOptions::spike_window, 1, 32,
-            {.description = "nodes either side of the pressure spike solved by local Newton"});
+  t.number("spike_half_width", &EhlOptions::spike_half_width, Range{0.0, 1.0, true, false},
+           {.description = "half-width of the window around the pressure spike solved by local Newton, in Hertzian "
+                           "half-widths (at least 4 nodes)"});
   t.integer("free_boundary_sweeps", &EhlOptions::free_boundary_sweeps, 0, 20,
             {.description = "extra sweeps over the outlet window after each cycle"});
   t.integer("free_boundary_window", &EhlOptions::free_boundary_window, 1, 256,
@@ -65,8 +66,8 @@ model::OptionTable<EhlOptions> make_grid_table() {
   t.number("x_out", &EhlOptions::x_out, Range{0.0, 1e3, true, false},
            {.description = "outlet end of the domain (given with x_in)", .unset = 0.0});
   t.choice("cycle", &EhlOptions::cycle,
-           std::vector<std::pair<std::string, CycleType>>{{"V", CycleType::V}, {"W", CycleType::W}},
-           {.description = "multigrid cycle: one (V) or two (W) coarse-grid visits per cycle"});
+           std::vector<std::pair<std::string, CycleType>>{{"V", CycleType::V}, {"W", CycleType::W}, {"F", CycleType::F}},
+           {.description = "multigrid cycle: one (V) or two (W) coarse-grid visits per cycle, or an F-cycle"});
   t.integer("max_cycles", &EhlOptions::max_cycles, 1, 100000,
             {.description = "cycles on the finest grid before the solve is reported unconverged"});
   t.integer("max_levels", &EhlOptions::max_levels, 2, 14, {.description = "cap on the levels target_error adds"});

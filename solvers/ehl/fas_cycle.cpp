@@ -8,7 +8,7 @@
 
 namespace gearbench::ehl {
 
-void FasMultigrid::Impl::cycle(std::size_t k) {
+void FasMultigrid::Impl::cycle(std::size_t k, CycleType type) {
   Level& fine = *levels_[k];
   if (k == 0) {
     solve_coarsest(fine, coarsest_steps_per_visit, coarsest_tolerance);
@@ -18,8 +18,15 @@ void FasMultigrid::Impl::cycle(std::size_t k) {
   Level& coarse = *levels_[k - 1];
   restrict_problem(fine, coarse);
   const std::vector<double> injected = coarse.P;
-  const int gamma = o_.cycle == CycleType::W ? 2 : 1;
-  for (int c = 0; c < gamma; ++c) cycle(k - 1);
+  if (type == CycleType::W) {
+    cycle(k - 1, CycleType::W);
+    cycle(k - 1, CycleType::W);
+  } else if (type == CycleType::F) {
+    cycle(k - 1, CycleType::F);
+    cycle(k - 1, CycleType::V);
+  } else {
+    cycle(k - 1, CycleType::V);
+  }
   correct(coarse, injected, fine);
   for (int s = 0; s < o_.post_sweeps; ++s) relax(fine);
   relax_spike(fine);

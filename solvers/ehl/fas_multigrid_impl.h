@@ -222,7 +222,7 @@ class FasMultigrid::Impl {
   [[nodiscard]] double limit_change(const Level& l, std::size_t i, double change) const;
 
   // --- local treatments (fas_local_treatments.cpp) ----------------------------
-  /// Local Newton solve of the pressure spike: the nodes within ±spike_window of it, with
+  /// Local Newton solve of the pressure spike: the nodes within ±spike_half_width of it, with
   /// every kernel coupling of the window and ε's film response, H0 fixed, two steps each
   /// halved until the window's complementarity merit falls. The spike is a grid-scale
   /// feature no coarse grid holds (Brandt's local relaxation of a singularity; eighth session:
@@ -263,7 +263,8 @@ class FasMultigrid::Impl {
   /// One V- or W-cycle from level k: pre-smoothing, the FAS coarse problem solved by γ
   /// cycles of the next level (the coarsest directly), the correction, post-smoothing, then
   /// the local treatments of the spike and the free boundary.
-  void cycle(std::size_t k);
+  void cycle(std::size_t k) { cycle(k, o_.cycle); }
+  void cycle(std::size_t k, CycleType type);
 
   /// Correction by linear interpolation, applied only inside the pressurised zone (not on
   /// cavitated nodes nor next to them); each change limited like a relaxation change.

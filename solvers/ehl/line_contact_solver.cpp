@@ -18,7 +18,7 @@ std::string EhlOptions::describe() const {
                                ? fmt::format("stop at {:g} of the error estimate", error_fraction)
                                : fmt::format("stop at residual {:.0e}", tolerance);
   return fmt::format("FMG + {}({},{}), ω {:g}/{:g}, κ {:g}, lines ±{}, |Δ ln ε| ≤ {:g}, {}; {}",
-                     cycle == CycleType::W ? 'W' : 'V', pre_sweeps, post_sweeps, omega_gauss_seidel, omega_jacobi,
+                     cycle == CycleType::W ? 'W' : cycle == CycleType::F ? 'F' : 'V', pre_sweeps, post_sweeps, omega_gauss_seidel, omega_jacobi,
                      relaxation_switch, line_band, change_limit, grid, rule);
 }
 

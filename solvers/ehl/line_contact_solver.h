@@ -28,8 +28,9 @@
 
 namespace gearbench::ehl {
 
-/// V: one coarse-grid visit per cycle (O(N) per cycle); W: two (O(N log N) in 1-D).
-enum class CycleType { V, W };
+/// V: one coarse-grid visit per cycle (O(N) per cycle); W: two (O(N log N) in 1-D); F: an F-cycle
+/// then a V-cycle on the coarse grid (O(N); Trottenberg et al., Multigrid (2001) §2.4.2).
+enum class CycleType { V, W, F };
 /// When a steady solve is accepted: at its own discretisation error (default), or at a
 /// residual tolerance (the users who want one; warm-started solves, which have no estimate).
 enum class StopRule { discretisation_error, residual };
@@ -69,9 +70,11 @@ struct EhlOptions {
   /// Largest |Δ ln ε| = |d ln ε/dP·ΔP| of one change of P: 0.5 keeps every change in the
   /// exponential's linear range; 3 and 1 left runaways (tenth session).              (0, 10]
   double change_limit = 0.5;
-  /// Nodes either side of the pressure spike solved by local Newton after post-smoothing
-  /// and after each FMG interpolation: ±2 and ±4 measured alike, ±4 kept (eighth session).  [1, 32]
-  int spike_window = 4;
+  /// Half-width, in Hertzian half-widths b, of the window around the pressure spike solved by
+  /// local Newton after post-smoothing and after each FMG interpolation (at least ±4 nodes).
+  /// A width in b, not in nodes: ±4 nodes left (10, 17.5) at 0.52/0.83/no convergence on
+  /// 2049/4097/8193 nodes; ±0.1b gives 0.19/0.08/0.07, and 0.03 on 16385 (thirteenth session).  (0, 1]
+  double spike_half_width = 0.1;
   /// Extra sweeps over the last free_boundary_window pressurised nodes after each cycle:
   /// 4 over 16 ended the period-2 oscillation at (20, 10) on 4097 nodes (eighth session).
   int free_boundary_sweeps = 4;   ///<                                                  [0, 20]
