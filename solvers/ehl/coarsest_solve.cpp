@@ -14,7 +14,7 @@ CoarsestStep coarsest_newton_step(const ReynoldsCoefficients& c, const std::vect
   const double h2 = c.h * c.h;
   for (std::size_t i = 1; i + 1 < n; ++i) {
     const auto row = static_cast<Eigen::Index>(i - 1);
-    if (P[i] <= 0.0 && residual[i] / c.jacobian(i, i) <= 0.0) {  // cavitated: stays at zero
+    if (stays_cavitated(P[i], residual[i], c.jacobian(i, i))) {
       A(row, row) = 1.0;
       continue;
     }

@@ -68,7 +68,7 @@ double FasMultigrid::Impl::coarsest_merit(Level& l) {
   const auto r = coarsest_residuals(l);
   double sum = 0.0;
   for (std::size_t i = 1; i + 1 < l.n; ++i) {
-    const double part = l.P[i] > 0.0 ? r[i] : std::min(r[i], 0.0);
+    const double part = complementarity_residual(l.P[i], r[i]);
     sum += part * part;
   }
   const double gap = (l.g - integral(l)) / l.h;

@@ -34,7 +34,7 @@ void FasMultigrid::Impl::relax_spike(Level& l) {
     double sum = 0.0;
     for (std::size_t i = a; i <= b; ++i) {
       const double r = l.f[i] - operator_at(l, i);
-      const double part = l.P[i] > 0.0 ? r : std::min(r, 0.0);
+      const double part = complementarity_residual(l.P[i], r);
       sum += part * part;
     }
     return sum;
@@ -49,7 +49,7 @@ void FasMultigrid::Impl::relax_spike(Level& l) {
     for (std::size_t i = a; i <= b; ++i) {
       const double r = l.f[i] - operator_at(l, i);
       const auto row = static_cast<Eigen::Index>(i - a);
-      if (l.P[i] <= 0.0 && r / c.jacobian(i, i) <= 0.0) { A(row, row) = 1.0; continue; }
+      if (stays_cavitated(l.P[i], r, c.jacobian(i, i))) { A(row, row) = 1.0; continue; }
       const double q_minus = (l.P[i - 1] - l.P[i]) / h2, q_plus = (l.P[i + 1] - l.P[i]) / h2;
       const double dH_prev = fs.left[i - 1] * q_minus;
       const double dH_here = fs.right[i - 1] * q_minus + fs.left[i] * q_plus;

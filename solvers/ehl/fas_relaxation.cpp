@@ -104,7 +104,7 @@ void FasMultigrid::Impl::solve_jacobi_lines(const Level& l, const ReynoldsCoeffi
 }
 
 bool FasMultigrid::Impl::stays_at_zero(const Level& l, std::size_t i, double r, double derivative) {
-  return l.cavitated_on_finer[i] || (l.P[i] <= 0.0 && r / derivative <= 0.0);
+  return l.cavitated_on_finer[i] || stays_cavitated(l.P[i], r, derivative);
 }
 
 double FasMultigrid::Impl::gauss_seidel_derivative(const ReynoldsCoefficients& c, std::size_t i) {

@@ -21,6 +21,18 @@ namespace gearbench::ehl {
   return {1.5, -2.0, 0.5};
 }
 
+/// The cavitation condition P ≥ 0 as every solver of the multigrid applies it: a node at
+/// zero whose Newton change r/(∂r/∂P_i) would be negative stays at zero (complementarity).
+[[nodiscard]] inline bool stays_cavitated(double P, double residual, double derivative) {
+  return P <= 0.0 && residual / derivative <= 0.0;
+}
+
+/// What a residual leaves of complementarity unmet: all of it where P > 0, its negative part
+/// at P = 0 (the merit of the Newton solves: the coarsest grid's and the spike's).
+[[nodiscard]] inline double complementarity_residual(double P, double residual) {
+  return P > 0.0 ? residual : (residual < 0.0 ? residual : 0.0);
+}
+
 /// The frozen coefficients of one grid during a relaxation sweep or a coarsest-grid solve.
 struct ReynoldsCoefficients {
   const std::vector<double>& eps_face;  ///< ε at the faces: entry i is ε_{i+½}, between nodes i and i+1
