@@ -85,6 +85,8 @@ void FasMultigrid::Impl::full_multigrid(EhlResult& r) {
     }
     interpolate_solution(*levels_[k - 1], *levels_[k]);
     make_finest(*levels_[k]);
+    update_film(*levels_[k]);
+    node_sweeps_ += static_cast<double>(levels_[k]->n);
     relax_spike(*levels_[k]);  // the cubic interpolation of a resolved spike overshoots (eighth session)
     cycle(k);
     record_fmg_level(r, k);

@@ -14,9 +14,7 @@ void FasMultigrid::Impl::relax_spike(Level& l) {
   constexpr int steps = 2;
   constexpr std::size_t fewest_nodes = 4;  // either side: the window measured best in nodes (eighth session)
   const auto w = std::max(fewest_nodes, static_cast<std::size_t>(std::ceil(o_.spike_half_width / l.h)));
-  update_film(l);
-  update_coefficients(l);
-  node_sweeps_ += static_cast<double>(l.n);
+  update_coefficients(l);  // the film is current (relax_spike's precondition)
   const auto s = spike_index(l.P);
   const std::size_t a = s > w ? s - w : 1;
   const std::size_t b = std::min(l.n - 2, s + w);
@@ -78,7 +76,6 @@ void FasMultigrid::Impl::relax_spike(Level& l) {
     }
   }
   update_film(l);  // the film outside the window, which the trials left
-  update_coefficients(l);
   node_sweeps_ += static_cast<double>(l.n);
 }
 
@@ -88,8 +85,7 @@ void FasMultigrid::Impl::relax_free_boundary(Level& l) {
   const auto w = static_cast<std::size_t>(o_.free_boundary_window);
   const std::size_t a = last > w ? last - w : 1;
   const std::size_t b = std::min(l.n - 1, last + beyond);
-  update_film(l);
-  const FilmBase base{l.P, l.H};
+  const FilmBase base{l.P, l.H};  // the film is current (relax_free_boundary's precondition)
   for (int s = 0; s < o_.free_boundary_sweeps; ++s) relax(l, a, b, &base);
   update_film(l);  // the film outside the window, which the sweeps left
   node_sweeps_ += static_cast<double>(l.n);

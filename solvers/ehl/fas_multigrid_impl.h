@@ -226,12 +226,14 @@ class FasMultigrid::Impl {
   /// every kernel coupling of the window and ε's film response, H0 fixed, two steps each
   /// halved until the window's complementarity merit falls. The spike is a grid-scale
   /// feature no coarse grid holds (Brandt's local relaxation of a singularity; eighth session:
-  /// the W-cycle's factor 0.25 → 0.12 with it).
+  /// the W-cycle's factor 0.25 → 0.12 with it). Expects the film current for P (a
+  /// relaxation leaves it so) and leaves it so.
   void relax_spike(Level& l);
 
   /// The outlet's free boundary, a grid-scale feature like the spike: free_boundary_sweeps
   /// extra sweeps over the last free_boundary_window pressurised nodes and a few beyond
   /// (eighth session: (20, 10) on 4097 nodes converges instead of a period-2 oscillation).
+  /// Expects the film current for P and leaves it so.
   void relax_free_boundary(Level& l);
 
   // --- coarsest grid (fas_coarsest.cpp) ---------------------------------------

@@ -73,8 +73,10 @@ struct EhlOptions {
   /// Half-width, in Hertzian half-widths b, of the window around the pressure spike solved by
   /// local Newton after post-smoothing and after each FMG interpolation (at least ±4 nodes).
   /// A width in b, not in nodes: ±4 nodes left (10, 17.5) at 0.52/0.83/no convergence on
-  /// 2049/4097/8193 nodes; ±0.1b gives 0.19/0.08/0.07, and 0.03 on 16385 (thirteenth session).  (0, 1]
-  double spike_half_width = 0.1;
+  /// 2049/4097/8193 nodes; ±0.05b gives 0.20/0.17/0.27/0.09 on 2049 … 16385, ±0.1b
+  /// 0.19/0.08/0.07/0.03 but twice the WU to the discretisation error on 16385 nodes (its
+  /// dense solve; thirteenth session).                                                   (0, 1]
+  double spike_half_width = 0.05;
   /// Extra sweeps over the last free_boundary_window pressurised nodes after each cycle:
   /// 4 over 16 ended the period-2 oscillation at (20, 10) on 4097 nodes (eighth session).
   int free_boundary_sweeps = 4;   ///<                                                  [0, 20]
