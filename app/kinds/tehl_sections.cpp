@@ -35,6 +35,7 @@ json thermal_result_json(const ehl::ThermalEhlResult& r, bool fields) {
                                 {"depth_loss", {finite_or_null(r.heat.depth_loss[0]),
                                                 finite_or_null(r.heat.depth_loss[1])}}}},
       {"diagnostics", {{"converged", r.converged}, {"iterations", r.iterations},
+                       {"coarse_grid_iterations", r.coarse_grid_iterations},
                        {"temperature_change_history_K", finite_vector(r.temperature_change_history)},
                        {"h_min_history_m", finite_vector(r.h_min_history)},
                        {"pressure_cycles", r.pressure_cycles}, {"work_units", r.work_units},

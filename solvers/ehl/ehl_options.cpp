@@ -261,6 +261,8 @@ model::OptionTable<ThermalEhlOptions> make_thermal_tuning_table() {
            {.description = "Anderson's mixing of the viscosity and density factors"});
   t.integer("anderson_depth", &ThermalEhlOptions::anderson_depth, 0, 50,
             {.description = "factor differences Anderson's acceleration keeps"});
+  t.integer("nested_above_nodes", &ThermalEhlOptions::nested_above_nodes, 9, max_nodes,
+            {.description = "grids of more nodes start from the converged solution of the grid half as fine"});
   return t;
 }
 

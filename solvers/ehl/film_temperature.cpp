@@ -92,6 +92,22 @@ FilmTemperature::FilmTemperature(std::vector<double> x, double Ua, double Ub, do
   Q_.assign(x_.size(), std::vector<double>(zeta_.size(), 0.0));
 }
 
+void FilmTemperature::interpolate_from(const FilmTemperature& coarse) {
+  const std::size_t n = x_.size();
+  if (coarse.x_.size() * 2 - 1 != n || coarse.zeta_.size() != zeta_.size() || coarse.s_.size() != s_.size() ||
+      coarse.depth_ != depth_)
+    throw std::logic_error("FilmTemperature::interpolate_from: not the same contact on the grid half as fine");
+  auto fill = [n](std::vector<std::vector<double>>& fine, const std::vector<std::vector<double>>& from) {
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < fine[i].size(); ++j)
+        fine[i][j] = i % 2 == 0 ? from[i / 2][j] : 0.5 * (from[i / 2][j] + from[i / 2 + 1][j]);
+  };
+  fill(T_, coarse.T_);
+  fill(Ts_[0], coarse.Ts_[0]);
+  fill(Ts_[1], coarse.Ts_[1]);
+  fill(Q_, coarse.Q_);
+}
+
 double FilmTemperature::dpdx_at(const std::vector<double>& p, std::size_t i, double dx) {
   if (i == 0) return (p[1] - p[0]) / dx;
   if (i + 1 == p.size()) return (p[i] - p[i - 1]) / dx;

@@ -65,6 +65,11 @@ class FilmTemperature {
   /// Sweeps until the change is below `tolerance` [K] or `max_sweeps`; returns the last change.
   double solve(const std::vector<double>& p, const std::vector<double>& h, double tolerance, int max_sweeps);
 
+  /// Takes the temperatures (film, solids) and flux profiles of the same contact on the grid
+  /// half as fine (nodes (n − 1)/2 + 1, same film and solid nodes, same depth): coinciding
+  /// nodes copied, the nodes between them linearly interpolated. The start of a nested solve.
+  void interpolate_from(const FilmTemperature& coarse);
+
   [[nodiscard]] ColumnFlow column_flow(std::size_t i, double p, double dpdx, double h) const;
   /// The flow at column i for the pressure and film fields (∂p/∂x by central differences).
   [[nodiscard]] ColumnFlow column_flow(std::size_t i, const std::vector<double>& p, const std::vector<double>& h) const {

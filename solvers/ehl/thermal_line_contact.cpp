@@ -20,9 +20,9 @@ EhlOptions ThermalEhlOptions::default_grid() {
 }
 
 std::string ThermalEhlResult::summary() const {
-  return fmt::format("{} thermal iterations, {:.3f} s; h_min {:.4e} m (isothermal {:.4e}), h_c {:.4e} m, "
+  return fmt::format("{} thermal iterations (+{} on coarser grids), {:.3f} s; h_min {:.4e} m (isothermal {:.4e}), h_c {:.4e} m, "
                      "p_max {:.4e} Pa, film temperature rise {:.2f} K",
-                     iterations, seconds, h_min, isothermal_h_min, h_central, p_max, temperature_rise_max);
+                     iterations, coarse_grid_iterations, seconds, h_min, isothermal_h_min, h_central, p_max, temperature_rise_max);
 }
 
 ThermalLineContact::ThermalLineContact(const LineContactData& contact, const lubricant::ThermalRheology& rheology,
@@ -76,10 +76,61 @@ double remaining_film_error(const std::vector<double>& h_min, const std::vector<
 }
 }  // namespace
 
+struct ThermalLineContact::NestedStart {
+  std::vector<double> P;            ///< dimensionless pressure
+  double H0 = 0.0;
+  std::vector<double> log_factors;  ///< ln F: flow factors, then wedge factors
+  std::optional<FilmTemperature> field;
+  int iterations = 0;               ///< thermal iterations of this grid and its coarser ones
+  int pressure_cycles = 0;          ///< multigrid cycles of this grid and its coarser ones
+  double work_units = 0.0;          ///< in the work units of each grid's own finest level
+};
+
 ThermalEhlResult ThermalLineContact::try_solve() const {
   const auto start = std::chrono::steady_clock::now();
+  auto r = solve_nested(options_.grid, nullptr);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+namespace {
+int finest_nodes(const EhlOptions& grid) { return grid.nodes != 0 ? grid.nodes : grid.finest_nodes(); }
+
+/// The values of a coarse grid's nodes on the grid twice as fine: coinciding nodes copied,
+/// the nodes between linearly interpolated. `v` holds `blocks` fields of equal length.
+std::vector<double> prolong(const std::vector<double>& v, int blocks) {
+  const std::size_t nc = v.size() / static_cast<std::size_t>(blocks), nf = 2 * nc - 1;
+  std::vector<double> out(nf * static_cast<std::size_t>(blocks));
+  for (std::size_t b = 0; b < static_cast<std::size_t>(blocks); ++b)
+    for (std::size_t i = 0; i < nf; ++i)
+      out[b * nf + i] = i % 2 == 0 ? v[b * nc + i / 2] : 0.5 * (v[b * nc + i / 2] + v[b * nc + i / 2 + 1]);
+  return out;
+}
+}  // namespace
+
+ThermalEhlResult ThermalLineContact::solve_nested(const EhlOptions& grid, NestedStart* end) const {
+  const int nodes = finest_nodes(grid);
+  std::optional<NestedStart> start;
+  if (nodes > options_.nested_above_nodes && (nodes - 1) % 2 == 0) {
+    EhlOptions half = grid;
+    if (grid.nodes != 0) half.nodes = (nodes - 1) / 2 + 1;
+    else half.levels = grid.levels - 1;
+    start.emplace();
+    auto coarse = solve_nested(half, &*start);
+    if (!coarse.converged) {
+      coarse.fail(fmt::format("thermal EHL on {} nodes: its nested start, the grid of {} nodes, did not converge: {}",
+                              nodes, finest_nodes(half), coarse.message));
+      return coarse;
+    }
+  }
+  return coupled(grid, start ? &*start : nullptr, end);
+}
+
+ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const NestedStart* nested,
+                                             NestedStart* end) const {
+  const auto start = std::chrono::steady_clock::now();
   const LineContactProblem problem(data_);
-  const EhlResult isothermal = LineContactSolver(problem, options_.grid).try_solve();
+  const EhlResult isothermal = LineContactSolver(problem, grid).try_solve();
   ThermalEhlResult r;
   r.rheology = options_.film.rheology;
   r.isothermal_h_central = isothermal.h_central;
@@ -106,13 +157,28 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
   ContactState state;
   state.flow_factor.assign(n, 1.0);
   state.wedge_factor.assign(n, 1.0);
+  std::vector<double> log_factors(2 * n, 0.0), log_image(2 * n);
+  if (nested) {  // start from the converged solution of the grid half as fine
+    field.interpolate_from(*nested->field);
+    log_factors = prolong(nested->log_factors, 2);
+    for (std::size_t i = 0; i < n; ++i) {
+      state.flow_factor[i] = std::exp(log_factors[i]);
+      state.wedge_factor[i] = std::exp(log_factors[n + i]);
+    }
+    EhlResult first = FasMultigrid(problem, grid, state).solve(WarmStart{prolong(nested->P, 1), nested->H0});
+    r.pressure_cycles += first.cycles;
+    r.work_units += first.work_units;
+    r.coarse_grid_iterations = nested->iterations;
+    r.pressure_cycles += nested->pressure_cycles;
+    r.work_units += nested->work_units;  // summed as the multigrid reports them, each on its own grid
+    if (std::isfinite(first.h_min)) current = std::move(first);
+  }
   // The coupling is the fixed point F = G(F) of the factors, accelerated by Anderson mixing
   // (anderson_mixing.h) on their logarithms: ln F keeps every factor positive whatever the
   // extrapolation, and weighs a node's change relative to its factor, which spans 1e-2 … 1e5
   // along an Eyring film.
   AndersonMixing anderson({.depth = options_.anderson_depth, .mixing = options_.factor_relaxation});
-  std::vector<double> log_factors(2 * n, 0.0), log_image(2 * n);
-  double h_min_before = isothermal.h_min;
+  double h_min_before = current.h_min;
   bool temperature_settled = false;
   for (int it = 0; it < options_.max_iterations; ++it) {
     for (std::size_t i = 0; i < n; ++i) {
@@ -141,7 +207,7 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
     }
     // A few cycles per iteration while the temperature still moves; the iteration ends only
     // on a pressure solve that met the multigrid tolerance.
-    EhlOptions inner = options_.grid;
+    EhlOptions inner = grid;
     if (!temperature_settled) inner.max_cycles = std::min(inner.max_cycles, options_.cycles_per_iteration);
     EhlResult next = FasMultigrid(problem, inner, state).solve(WarmStart{current.P, current.H0});
     r.pressure_cycles += next.cycles;
@@ -186,6 +252,15 @@ ThermalEhlResult ThermalLineContact::try_solve() const {
   }
   fill_figures(problem, current, field, r);
   r.heat = field.heat_balance(p, h);
+  if (end) {
+    end->P = current.P;
+    end->H0 = current.H0;
+    end->log_factors = log_factors;
+    end->field.emplace(field);
+    end->iterations = r.iterations + r.coarse_grid_iterations;
+    end->pressure_cycles = r.pressure_cycles;
+    end->work_units = r.work_units;
+  }
   r.pressure = std::move(current);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

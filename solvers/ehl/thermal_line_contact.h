@@ -54,10 +54,26 @@ struct ThermalEhlOptions {
   /// observed contraction of the factor residual (remaining_film_error in the .cpp).
   double film_tolerance = 1e-5;
   /// Anderson's mixing β (anderson_mixing.h): the relaxed step inside the accelerated one.
-  /// 0.3: the roller of cases/tehl_point_roller_eyring.json does not converge in 60 iterations
-  /// at 0.5, whose factor map has an eigenvalue near −13 (plain relaxation: stable below 0.14).
-  double factor_relaxation = 0.3;
+  /// 0.15: on 1281 nodes the Eyring roller (cases/tehl_point_roller_eyring.json) grows a mode
+  /// at 0.3 (residual ×1.08 per iteration from iteration 27 until a restart; 65–69 iterations)
+  /// and settles in 29–31 at 0.15; on 2561 nodes 0.3 does not settle in 200 iterations, 0.15
+  /// and 0.1 do (72, 68). 0.5 and 0.7 stagnate on 641 nodes (the factor map's eigenvalue near
+  /// −13: plain relaxation is stable below 0.14). On 641 nodes 0.15 costs the Newtonian
+  /// roller 35 iterations where 0.3 takes 22 (both nested).
+  double factor_relaxation = 0.15;
   int anderson_depth = 5;              ///< Anderson's depth m: factor differences kept
+  /// Nested iteration: a grid of more nodes than this starts its coupling from the converged
+  /// solution of the grid half as fine (itself solved the same way: 2561 on 1281 on 641 on
+  /// 321 on 161), interpolated linearly (pressure, ln F, film and solid temperatures); up to
+  /// it, from the isothermal solution. Why: the isothermal start's outlet has the Newtonian
+  /// pressure spike, whose downstream gradient grows as 1/Δx (|∂p/∂x·h| 7.7τ0 on 641 nodes,
+  /// 15τ0 on 1281 on the 1 MN/m roller); an Eyring column at that frozen stress shears at
+  /// sinh(τ/τ0)·τ0/η, which rises as the oil heats and thins, and the first temperature sweeps
+  /// run away (non-finite at x ≈ 0.95b on 1281 and 2561 nodes). A converged coarser solution
+  /// has the Eyring film's own bounded outlet gradient. It also saves fine iterations: the
+  /// Newtonian roller takes 33 and 38 on 1281 and 2561 nodes instead of 97 and 74 from the
+  /// isothermal start.
+  int nested_above_nodes = 161;
 
   /// "grid", "rheology" and the "thermal" section (ehl_options.cpp).
   static const model::OptionTable<ThermalEhlOptions>& table();
@@ -84,7 +100,8 @@ struct ThermalEhlResult : model::SolveStatus {
   std::vector<std::vector<double>> film_temperature;                ///< [i][j]
   std::array<std::vector<std::vector<double>>, 2> solid_temperature; ///< [body][i][k]
   // Diagnostics.
-  int iterations = 0;
+  int iterations = 0;                               ///< on this grid
+  int coarse_grid_iterations = 0;                   ///< on the coarser grids of a nested solve
   std::vector<double> temperature_change_history;  ///< [K] per iteration
   std::vector<double> h_min_history;                ///< [m] per iteration
   std::vector<double> factor_residual_history;      ///< ‖ln G(F) − ln F‖₂ per iteration
@@ -113,6 +130,9 @@ class ThermalLineContact {
   [[nodiscard]] const LineContactData& isothermal_data() const { return data_; }
 
  private:
+  struct NestedStart;  ///< a converged solution handed to the grid twice as fine (.cpp)
+  [[nodiscard]] ThermalEhlResult solve_nested(const EhlOptions& grid, NestedStart* end) const;
+  [[nodiscard]] ThermalEhlResult coupled(const EhlOptions& grid, const NestedStart* start, NestedStart* end) const;
   void fill_figures(const LineContactProblem& problem, const EhlResult& pressure, const FilmTemperature& field,
                     ThermalEhlResult& r) const;
 

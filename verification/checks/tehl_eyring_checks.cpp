@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 #include <optional>
 
 #include "check_registry.h"
@@ -13,6 +14,7 @@
 #include "model/case_reader.h"
 #include "model/json_reader.h"
 #include "micropitting/iso15144_micropitting.h"
+#include "support/convergence.h"
 #include "support/thermal_fixtures.h"
 
 namespace gearbench::verification {
@@ -28,6 +30,7 @@ struct Film {
   std::optional<double> eyring_stress = 5e6;  ///< τ0 [Pa]; none: a Newtonian film
   int nodes = 641;
   bool heat = true;
+  int film_nodes = 10;
 };
 
 ThermalEhlResult solve(const Film& f) {
@@ -36,6 +39,7 @@ ThermalEhlResult solve(const Film& f) {
   const lubricant::ThermalRheology rheology(oil, testing_support::mineral_oil_inlet_temperature);
   ThermalEhlOptions o;
   o.grid.nodes = f.nodes;
+  o.film.film_nodes = f.film_nodes;
   o.film.shear_heating = o.film.compression = f.heat;
   if (f.eyring_stress) o.film.rheology = lubricant::ShearRheology::eyring;
   return ThermalLineContact(testing_support::sliding_contact(f.srr), rheology, testing_support::steel_solids(), o)
@@ -219,9 +223,12 @@ Roller roller_case(const CheckContext& ctx) {
   return r;
 }
 
-ThermalEhlResult solve_roller(const Roller& c, lubricant::ShearRheology rheology) {
+ThermalEhlResult solve_roller(const Roller& c, lubricant::ShearRheology rheology, int nodes = 641,
+                              int max_iterations = ThermalEhlOptions{}.max_iterations) {
   const lubricant::ThermalRheology fluid(c.lubricant, c.inlet_temperature);
   ThermalEhlOptions o;
+  o.grid.nodes = nodes;
+  o.max_iterations = max_iterations;
   o.film.rheology = rheology;
   return ThermalLineContact(c.contact, fluid, c.solids, o).solve();
 }
@@ -272,6 +279,99 @@ const RegisterCheck roller(CheckSpec{
       return CheckValue{mean_wall_rise(e) / flash_e - 1.0, 0.0,
                         {{"eyring", figures(e, flash_e)}, {"newtonian", figures(n, flash_n)},
                          {"newtonian_wall_vs_flash", mean_wall_rise(n) / flash_n - 1.0}}};
+    }});
+
+// ---- grid convergence of the Eyring film (issue 26, "Convergence") -----------------------
+/// The figures of a refinement study and their observed orders (three finest values).
+nlohmann::json refinement(const std::vector<int>& grid, const std::vector<ThermalEhlResult>& r) {
+  std::vector<double> h_min, h_c, dT, mu;
+  std::vector<int> iterations, coarse_iterations;
+  for (const auto& x : r) {
+    h_min.push_back(x.h_min);
+    h_c.push_back(x.h_central);
+    dT.push_back(x.temperature_rise_max);
+    mu.push_back(std::abs(x.friction_coefficient));
+    iterations.push_back(x.iterations);
+    coarse_iterations.push_back(x.coarse_grid_iterations);
+  }
+  const auto order = [](const std::vector<double>& v) {
+    const double p = observed_order(v);
+    return std::isfinite(p) ? nlohmann::json(p) : nlohmann::json("undefined");
+  };
+  return {{"nodes", grid}, {"h_min_m", h_min}, {"h_central_m", h_c}, {"dT_K", dT}, {"mu", mu},
+          {"iterations", iterations}, {"coarse_grid_iterations", coarse_iterations},
+          {"order_h_min", order(h_min)}, {"order_h_central", order(h_c)}, {"order_dT", order(dT)},
+          {"order_mu", order(mu)}};
+}
+
+/// Of h_min's and h_c's observed orders the one farther from 2 (NaN when either is undefined).
+double worst_order(const std::vector<ThermalEhlResult>& r) {
+  std::vector<double> h_min, h_c;
+  for (const auto& x : r) {
+    h_min.push_back(x.h_min);
+    h_c.push_back(x.h_central);
+  }
+  const double a = observed_order(h_min), b = observed_order(h_c);
+  if (!std::isfinite(a) || !std::isfinite(b)) return std::numeric_limits<double>::quiet_NaN();
+  return std::abs(a - 2.0) >= std::abs(b - 2.0) ? a : b;
+}
+
+const std::string order_justification =
+    "measured: h_min and h_c converge at order 1.9–2.1 along x on both contacts (the films are set by the "
+    "second-order Reynolds and deformation discretisation; the first-order upwind energy equation moves them "
+    "less than that on these grids), so 2 ± 0.5 holds the observed order and fails for a first-order "
+    "(≤ 1.5) or non-monotone (NaN) sequence, or for any grid that does not converge (solve() throws). The "
+    "temperature rise and μ are recorded, not checked: the coupling stops on a temperature change of 1e-3 of "
+    "the rise, the size of their grid-to-grid differences on the finest grids";
+
+const RegisterCheck x_order(CheckSpec{
+    .id = "tehl.eyring.x_grid_order", .section = section, .solver = solver,
+    .reference = "its own finer grids along x (321, 641, 1281 nodes; the 1281-node solve nested on 641)",
+    .quantity = "of the observed orders of h_min and h_c the one farther from 2 of the sliding contact "
+                "(cases/tehl_point_sliding.json, SRR 0.5) with a Ree–Eyring film (τ0 5 MPa)",
+    .unit = "-", .tolerance = {0.5, 0}, .justification = order_justification, .tier = Tier::fast,
+    .run = [](const CheckContext&) {
+      const std::vector<int> grid{321, 641, 1281};
+      std::vector<ThermalEhlResult> r;
+      for (int n : grid) r.push_back(solve({.srr = 0.5, .nodes = n}));
+      return CheckValue{worst_order(r), 2.0, refinement(grid, r)};
+    }});
+
+const RegisterCheck film_order(CheckSpec{
+    .id = "tehl.eyring.film_grid_order", .section = section, .solver = solver,
+    .reference = "its own finer grids across the film (9, 17, 33 nodes; 321 nodes along x)",
+    .quantity = "of the observed orders of h_min and h_c the one farther from 2 across the film of the sliding "
+                "contact (SRR 0.5) with a Ree–Eyring film (τ0 5 MPa)",
+    .unit = "-", .tolerance = {0.5, 0},
+    .justification = "across the film every rule is second order (central differences, trapezoidal f0 and f1, "
+                     "Simpson's outer integrals on the trapezoidal integrands); measured 1.9–2.0, so 2 ± 0.5 fails "
+                     "a first-order rule or a non-monotone sequence",
+    .tier = Tier::fast,
+    .run = [](const CheckContext&) {
+      const std::vector<int> grid{9, 17, 33};
+      std::vector<ThermalEhlResult> r;
+      for (int n : grid) r.push_back(solve({.srr = 0.5, .nodes = 321, .film_nodes = n}));
+      return CheckValue{worst_order(r), 2.0, refinement(grid, r)};
+    }});
+
+const RegisterCheck roller_order(CheckSpec{
+    .id = "tehl.eyring.roller_fine_grids", .section = section, .solver = solver,
+    .reference = "its own finer grids along x (641, 1281, 2561 nodes, each nested on the one half as fine)",
+    .quantity = "of the observed orders of h_min and h_c the one farther from 2 of the issue's 1 MN/m roller "
+                "(cases/tehl_point_roller_eyring.json, τ0 5 MPa) on 641, 1281 and 2561 nodes",
+    .unit = "-", .tolerance = {0.5, 0},
+    .justification = order_justification + "; before the nested start the 1281- and 2561-node solves stopped with "
+                     "a non-finite temperature, so this check also holds that both converge, with a cap of 150 "
+                     "iterations: on 2561 nodes the factor residual sits on a floor of ~0.02 (carried by the far "
+                     "inlet's nodes, whose factors are within 0.5 % of 1) and the stop comes after 70–120 "
+                     "iterations, past the default cap of 60 (full tier: about two minutes)",
+    .tier = Tier::full,
+    .run = [](const CheckContext& ctx) {
+      const auto c = roller_case(ctx);
+      const std::vector<int> grid{641, 1281, 2561};
+      std::vector<ThermalEhlResult> r;
+      for (int n : grid) r.push_back(solve_roller(c, lubricant::ShearRheology::eyring, n, 150));
+      return CheckValue{worst_order(r), 2.0, refinement(grid, r)};
     }});
 
 }  // namespace
