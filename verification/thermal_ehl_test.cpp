@@ -119,6 +119,30 @@ TEST(ThermalLineContact, HeatBalanceCloses) {
   EXPECT_LT(r.h_min, r.isothermal_h_min);
 }
 
+// Nested iteration (issue 26) changes the start, not the solution: the sliding contact's Eyring
+// film on 161 nodes (the unit tier also runs under ASan), nested on 81 and from the isothermal
+// start. Each stop
+// leaves h_min within about 3e-5 of the fixed point (film_tolerance 1e-5 on the estimated
+// remaining error, whose known miss on the Eyring roller is 2.6e-5: docs/thermal-ehl-model.md),
+// so the two agree within 1e-4; measured 1e-6.
+TEST(ThermalLineContact, NestedStartReachesTheSameSolution) {
+  auto oil = roelands_oil();
+  oil.eyring_stress = 5e6;
+  const lubricant::ThermalRheology rheology(oil, T0);
+  ThermalEhlOptions o;
+  o.grid.nodes = 161;
+  o.film.rheology = lubricant::ShearRheology::eyring;
+  o.nested_above_nodes = 81;
+  const auto nested = ThermalLineContact(contact(2.5, 1.5), rheology, steel(), o).solve();
+  o.nested_above_nodes = 161;
+  const auto cold = ThermalLineContact(contact(2.5, 1.5), rheology, steel(), o).solve();
+  EXPECT_GT(nested.coarse_grid_iterations, 0);
+  EXPECT_EQ(cold.coarse_grid_iterations, 0);
+  EXPECT_NEAR(nested.h_min / cold.h_min, 1.0, 1e-4);
+  EXPECT_NEAR(nested.h_central / cold.h_central, 1.0, 1e-4);
+  EXPECT_NEAR(nested.friction_coefficient / cold.friction_coefficient, 1.0, 1e-4);
+}
+
 // A pressure solve that cannot converge (one cycle to a residual of 1e-14) is a status of
 // try_solve, not an exception, from the isothermal start onward; solve() turns it into a
 // ConvergenceError that says so.

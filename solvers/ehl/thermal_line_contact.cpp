@@ -111,7 +111,9 @@ std::vector<double> prolong(const std::vector<double>& v, int blocks) {
 ThermalEhlResult ThermalLineContact::solve_nested(const EhlOptions& grid, NestedStart* end) const {
   const int nodes = finest_nodes(grid);
   std::optional<NestedStart> start;
-  if (nodes > options_.nested_above_nodes && (nodes - 1) % 2 == 0) {
+  // The grid half as fine exists: an even number of intervals, and (given as levels) a level to drop.
+  const bool halvable = (nodes - 1) % 2 == 0 && (grid.nodes != 0 || grid.levels > 1);
+  if (nodes > options_.nested_above_nodes && halvable) {
     EhlOptions half = grid;
     if (grid.nodes != 0) half.nodes = (nodes - 1) / 2 + 1;
     else half.levels = grid.levels - 1;
