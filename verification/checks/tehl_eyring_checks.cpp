@@ -317,7 +317,7 @@ double worst_order(const std::vector<ThermalEhlResult>& r) {
 }
 
 const std::string order_justification =
-    "measured: h_min and h_c converge at order 1.9–2.1 along x on both contacts (the films are set by the "
+    "measured: h_min and h_c converge at order 1.8–2.1 along x on both contacts and both rheologies (the films are set by the "
     "second-order Reynolds and deformation discretisation; the first-order upwind energy equation moves them "
     "less than that on these grids), so 2 ± 0.5 holds the observed order and fails for a first-order "
     "(≤ 1.5) or non-monotone (NaN) sequence, or for any grid that does not converge (solve() throws). The "
@@ -364,7 +364,7 @@ const RegisterCheck roller_order(CheckSpec{
                      "a non-finite temperature, so this check also holds that both converge, with a cap of 150 "
                      "iterations: on 2561 nodes the factor residual sits on a floor of ~0.02 (carried by the far "
                      "inlet's nodes, whose factors are within 0.5 % of 1) and the stop comes after 70–120 "
-                     "iterations, past the default cap of 60 (full tier: about two minutes)",
+                     "iterations, past the default cap of 60 (full tier: 160 s measured)",
     .tier = Tier::full,
     .run = [](const CheckContext& ctx) {
       const auto c = roller_case(ctx);
