@@ -316,6 +316,14 @@ double worst_order(const std::vector<ThermalEhlResult>& r) {
   return std::abs(a - 2.0) >= std::abs(b - 2.0) ? a : b;
 }
 
+/// A refinement study: one solve per grid, its worst order against 2 and its figures.
+template <class SolveOn>
+CheckValue grid_study(const std::vector<int>& grid, SolveOn solve_on) {
+  std::vector<ThermalEhlResult> r;
+  for (int n : grid) r.push_back(solve_on(n));
+  return CheckValue{worst_order(r), 2.0, refinement(grid, r)};
+}
+
 const std::string order_justification =
     "measured: h_min and h_c converge at order 1.8–2.1 along x on both contacts and both rheologies (the films are set by the "
     "second-order Reynolds and deformation discretisation; the first-order upwind energy equation moves them "
@@ -331,10 +339,7 @@ const RegisterCheck x_order(CheckSpec{
                 "(cases/tehl_point_sliding.json, SRR 0.5) with a Ree–Eyring film (τ0 5 MPa)",
     .unit = "-", .tolerance = {0.5, 0}, .justification = order_justification, .tier = Tier::fast,
     .run = [](const CheckContext&) {
-      const std::vector<int> grid{321, 641, 1281};
-      std::vector<ThermalEhlResult> r;
-      for (int n : grid) r.push_back(solve({.srr = 0.5, .nodes = n}));
-      return CheckValue{worst_order(r), 2.0, refinement(grid, r)};
+      return grid_study({321, 641, 1281}, [](int n) { return solve({.srr = 0.5, .nodes = n}); });
     }});
 
 const RegisterCheck film_order(CheckSpec{
@@ -348,10 +353,7 @@ const RegisterCheck film_order(CheckSpec{
                      "a first-order rule or a non-monotone sequence",
     .tier = Tier::fast,
     .run = [](const CheckContext&) {
-      const std::vector<int> grid{9, 17, 33};
-      std::vector<ThermalEhlResult> r;
-      for (int n : grid) r.push_back(solve({.srr = 0.5, .nodes = 321, .film_nodes = n}));
-      return CheckValue{worst_order(r), 2.0, refinement(grid, r)};
+      return grid_study({9, 17, 33}, [](int n) { return solve({.srr = 0.5, .nodes = 321, .film_nodes = n}); });
     }});
 
 const RegisterCheck roller_order(CheckSpec{
@@ -368,10 +370,8 @@ const RegisterCheck roller_order(CheckSpec{
     .tier = Tier::full,
     .run = [](const CheckContext& ctx) {
       const auto c = roller_case(ctx);
-      const std::vector<int> grid{641, 1281, 2561};
-      std::vector<ThermalEhlResult> r;
-      for (int n : grid) r.push_back(solve_roller(c, lubricant::ShearRheology::eyring, n, 150));
-      return CheckValue{worst_order(r), 2.0, refinement(grid, r)};
+      return grid_study({641, 1281, 2561},
+                        [&](int n) { return solve_roller(c, lubricant::ShearRheology::eyring, n, 150); });
     }});
 
 }  // namespace
