@@ -29,8 +29,9 @@ void FasMultigrid::Impl::cycle(std::size_t k, CycleType type) {
   }
   correct(coarse, injected, fine);
   for (int s = 0; s < o_.post_sweeps; ++s) relax(fine);
-  relax_spike(fine);
-  relax_free_boundary(fine);
+  const FilmBase before_spike{fine.P, fine.H};
+  const NodeRange spike = relax_spike(fine);
+  relax_free_boundary(fine, before_spike, spike);
 }
 
 void FasMultigrid::Impl::correct(const Level& coarse, const std::vector<double>& injected, Level& fine) const {
@@ -87,7 +88,9 @@ void FasMultigrid::Impl::full_multigrid(EhlResult& r) {
     make_finest(*levels_[k]);
     update_film(*levels_[k]);
     node_sweeps_ += static_cast<double>(levels_[k]->n);
-    relax_spike(*levels_[k]);  // the cubic interpolation of a resolved spike overshoots (eighth session)
+    // The cubic interpolation of a resolved spike overshoots (eighth session); the cycle's first
+    // relaxation brings the film outside the spike's window up to date.
+    (void)relax_spike(*levels_[k]);
     cycle(k);
     record_fmg_level(r, k);
     // A level whose film is still negative (heavy loads on coarse grids: no estimate) is not

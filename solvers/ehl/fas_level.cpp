@@ -20,11 +20,12 @@ void FasMultigrid::Impl::update_film(Level& l) {
     for (std::size_t i = 0; i < l.n; ++i) l.H[i] += l.film_correction[i];
 }
 
-void FasMultigrid::Impl::update_film_window(Level& l, const FilmBase& base, std::size_t lo, std::size_t hi) const {
+void FasMultigrid::Impl::update_film_window(Level& l, const FilmBase& base, std::size_t lo, std::size_t hi,
+                                            NodeRange changed) const {
   const double c = problem_.deformation_factor() / pi;
   for (std::size_t k = lo; k <= hi; ++k) {
     double shift = 0.0;
-    for (std::size_t j = lo; j <= hi; ++j)
+    for (std::size_t j = changed.first; j <= changed.last; ++j)
       shift += l.deformation.kernel(k > j ? k - j : j - k) * (l.P[j] - base.P[j]);
     l.H[k] = base.H[k] - c * shift;
   }

@@ -10,7 +10,7 @@
 
 namespace gearbench::ehl {
 
-void FasMultigrid::Impl::relax_spike(Level& l) {
+FasMultigrid::Impl::NodeRange FasMultigrid::Impl::relax_spike(Level& l) {
   constexpr int steps = 2;
   constexpr std::size_t fewest_nodes = 4;  // either side: the window measured best in nodes (eighth session)
   const auto w = std::max(fewest_nodes, static_cast<std::size_t>(std::ceil(o_.spike_half_width / l.h)));
@@ -75,17 +75,20 @@ void FasMultigrid::Impl::relax_spike(Level& l) {
       }
     }
   }
-  update_film(l);  // the film outside the window, which the trials left
-  node_sweeps_ += static_cast<double>(l.n);
+  return {a, b};
 }
 
-void FasMultigrid::Impl::relax_free_boundary(Level& l) {
+void FasMultigrid::Impl::relax_free_boundary(Level& l, const FilmBase& before, NodeRange changed) {
   constexpr std::size_t beyond = 4;  // cavitated nodes the free boundary may move into
   const std::size_t last = last_pressurised(l.P);
   const auto w = static_cast<std::size_t>(o_.free_boundary_window);
   const std::size_t a = last > w ? last - w : 1;
   const std::size_t b = std::min(l.n - 1, last + beyond);
-  const FilmBase base{l.P, l.H};  // the film is current (relax_free_boundary's precondition)
+  // The window's film with the spike's changes: the nodes its sweeps read (as in relax()).
+  const std::size_t lo = a >= 3 ? a - 3 : 0, hi = std::min(l.n - 1, b + 2);
+  update_film_window(l, before, lo, hi, changed);
+  node_sweeps_ += static_cast<double>(hi - lo + 1);
+  const FilmBase base{l.P, l.H};
   for (int s = 0; s < o_.free_boundary_sweeps; ++s) relax(l, a, b, &base);
   update_film(l);  // the film outside the window, which the sweeps left
   node_sweeps_ += static_cast<double>(l.n);

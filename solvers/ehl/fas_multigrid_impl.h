@@ -129,10 +129,18 @@ class FasMultigrid::Impl {
   struct FilmBase {
     std::vector<double> P, H;
   };
-  /// The film of nodes lo … hi when P has changed since `base` only on lo … hi:
-  /// H_k = base.H_k − (D/π)Σ_j K_|k−j|(P_j − base.P_j), O(window²) instead of the whole grid's
-  /// FFT; the film outside the window waits for the next full update.
-  void update_film_window(Level& l, const FilmBase& base, std::size_t lo, std::size_t hi) const;
+  /// Nodes first … last (inclusive).
+  struct NodeRange {
+    std::size_t first = 0, last = 0;
+  };
+  /// The film of nodes lo … hi when P has changed since `base` only on `changed` (default:
+  /// lo … hi): H_k = base.H_k − (D/π)Σ_j K_|k−j|(P_j − base.P_j), O(window²) instead of the
+  /// whole grid's FFT; the film outside the window waits for the next full update.
+  void update_film_window(Level& l, const FilmBase& base, std::size_t lo, std::size_t hi) const {
+    update_film_window(l, base, lo, hi, {lo, hi});
+  }
+  void update_film_window(Level& l, const FilmBase& base, std::size_t lo, std::size_t hi,
+                          NodeRange changed) const;
 
   /// ε = ρ̄H³/(η̄λ) at the nodes and faces (ε_{i+½} the mean of the nodes') and ρ̄, from the
   /// grid's own P and H; ln η̄ rather than η̄, so that ε underflows to 0 where η̄ would
@@ -227,14 +235,16 @@ class FasMultigrid::Impl {
   /// halved until the window's complementarity merit falls. The spike is a grid-scale
   /// feature no coarse grid holds (Brandt's local relaxation of a singularity; eighth session:
   /// the W-cycle's factor 0.25 → 0.12 with it). Expects the film current for P (a
-  /// relaxation leaves it so) and leaves it so.
-  void relax_spike(Level& l);
+  /// relaxation leaves it so); leaves it current on the returned window only (the step after
+  /// it brings the rest up to date: a whole-grid update here cost ~1 of a visit's ~6 sweeps).
+  NodeRange relax_spike(Level& l);
 
   /// The outlet's free boundary, a grid-scale feature like the spike: free_boundary_sweeps
   /// extra sweeps over the last free_boundary_window pressurised nodes and a few beyond
   /// (eighth session: (20, 10) on 4097 nodes converges instead of a period-2 oscillation).
-  /// Expects the film current for P and leaves it so.
-  void relax_free_boundary(Level& l);
+  /// Expects the film current for P except for the changes since `before` on `changed` (the
+  /// spike's), which it adds in its window; leaves the film current everywhere.
+  void relax_free_boundary(Level& l, const FilmBase& before, NodeRange changed);
 
   // --- coarsest grid (fas_coarsest.cpp) ---------------------------------------
   /// Newton steps in (P, H0) on the coarsest grid (coarsest_solve.h) until the step no
