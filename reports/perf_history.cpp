@@ -100,8 +100,12 @@ std::vector<PerfRun> load_perf_records(const std::string& dir, PerfClock clock) 
   if (!fs::is_directory(dir)) throw InputError(fmt::format("--dir {}: not a directory", dir));
   std::vector<PerfRun> runs;
   std::vector<fs::path> files;
+  // Hidden files are not records: `bench` writes its raw output to .bench-<pid>.json while it
+  // runs, and leaves it half-written when killed (a `verify` meanwhile failed on it).
   for (const auto& entry : fs::directory_iterator(dir))
-    if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
+    if (entry.is_regular_file() && entry.path().extension() == ".json" &&
+        !entry.path().filename().string().starts_with("."))
+      files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {
     const json j = model::read_json_file(f.string());

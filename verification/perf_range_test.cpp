@@ -160,6 +160,18 @@ TEST(PerfRange, RegressionFlaggedAtTheCommitWhereItAppearsAcrossAFailedBuild) {
   EXPECT_NE(md.find("## Largest changes"), std::string::npos);
 }
 
+// A benchmark run still writing (or killed while writing) its raw output, .bench-<pid>.json in
+// the records' folder, is not a record and must not stop `verify` or `report perf`.
+TEST(PerfHistory, HalfWrittenBenchOutputIsNotARecord) {
+  const auto dir = fs::temp_directory_path() / ("gearbench_perf_hidden_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / ".bench-1880.json") << "{\"benchmarks\": [";
+  std::vector<PerfRun> runs;
+  EXPECT_NO_THROW(runs = load_perf_records(dir.string()));
+  EXPECT_TRUE(runs.empty());
+  fs::remove_all(dir);
+}
+
 TEST(PerformanceSection, ThisCommitAgainstThePreviousRecordOfThisMachine) {
   std::vector<PerfRun> history;
   history.push_back(parse_perf_record(record("aaa", "2026-11-01T00:00:00Z", "A", {{"BM_X", reps(1.0)}}), "a.json"));
