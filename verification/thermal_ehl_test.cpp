@@ -78,6 +78,23 @@ TEST(ThermalRheology, RoelandsTemperatureSlopeIsBeta) {
   EXPECT_NEAR(r.thermal_expansion(0.0, T), -0.7 / (870.0 - 0.7 * 25.0), 1e-15);
 }
 
+// The temperature sweeps take η at a column's cached pressure factor and ∂ln η/∂T
+// analytically: the same η as viscosity(p, T), and the slope a central difference gives.
+TEST(ThermalRheology, AtPressureMatchesViscosityAndItsTemperatureSlope) {
+  for (const auto& data : {roelands_oil(), walther_oil()}) {
+    const lubricant::ThermalRheology r(data, T0);
+    for (double p : {0.0, 2e8, 1e9})
+      for (double T : {T0, T0 + 30.0, T0 + 150.0}) {
+        const auto at_p = r.at_pressure(p);
+        double slope = 0.0;
+        EXPECT_EQ(at_p.viscosity(T, &slope), r.viscosity(p, T));
+        const double dT = 1e-3;
+        const double fd = (std::log(r.viscosity(p, T + dT)) - std::log(r.viscosity(p, T - dT))) / (2.0 * dT);
+        EXPECT_NEAR(slope, fd, 1e-6 * std::abs(fd)) << "p " << p << " T " << T;
+      }
+  }
+}
+
 TEST(ThermalRheology, RejectsUnphysicalData) {
   auto d = walther_oil();
   d.nu100 = 400e-6;

@@ -114,11 +114,14 @@ double FilmTemperature::dpdx_at(const std::vector<double>& p, std::size_t i, dou
   return (p[i + 1] - p[i - 1]) / (2.0 * dx);
 }
 
-ColumnFlow FilmTemperature::column_flow(std::size_t i, double p, double dpdx, double h) const {
+ColumnFlow FilmTemperature::column_flow(std::size_t i, double p, double dpdx, double h,
+                                        std::vector<double>* dln_eta_dT) const {
   const std::size_t nz = zeta_.size();
   std::vector<double> eta(nz), rho(nz);
+  if (dln_eta_dT) dln_eta_dT->resize(nz);
+  const auto at_p = rheology_.at_pressure(p);  // the column's nodes share p: one pressure factor
   for (std::size_t j = 0; j < nz; ++j) {
-    eta[j] = rheology_.viscosity(p, T_[i][j]);
+    eta[j] = at_p.viscosity(T_[i][j], dln_eta_dT ? &(*dln_eta_dT)[j] : nullptr);
     rho[j] = rheology_.density(p, T_[i][j]);
   }
   return ehl::column_flow(zeta_, std::move(eta), std::move(rho), Ua_, Ub_, dpdx, h, eyring_stress_);
@@ -136,7 +139,8 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
   const std::size_t nz = zeta_.size(), ns = s_.size(), n = x_.size();
   const double dz = 1.0 / static_cast<double>(nz - 1);
   const double dpdx = dpdx_at(p, i, dx_);
-  const ColumnFlow flow = column_flow(i, p[i], dpdx, h[i]);
+  std::vector<double> dln_eta;  // ∂ln η/∂T per film node, for the source slope
+  const ColumnFlow flow = column_flow(i, p[i], dpdx, h[i], &dln_eta);
   const double k = rheology_.data().thermal_conductivity, c = rheology_.data().specific_heat;
   const double hi = h[i];
   // ∂Q/∂x at fixed ζ from the neighbouring columns of the last sweep.
@@ -179,10 +183,8 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
     const double T = T_[i][j];
     if (o_.shear_heating) {
       const double heating = flow.stress[j] * flow.shear_rate[j];
-      const double dT = 1e-3;
-      const double dln_eta = (std::log(rheology_.viscosity(p[i], T + dT)) - std::log(flow.viscosity[j])) / dT;
       S.value += heating;
-      S.slope += std::min(0.0, heating * stress_response(flow.stress[j]) * dln_eta);
+      S.slope += std::min(0.0, heating * stress_response(flow.stress[j]) * dln_eta[j]);
     }
     if (o_.compression) S.value -= T * rheology_.thermal_expansion(p[i], T) * flow.u[j] * dpdx;
     return S;

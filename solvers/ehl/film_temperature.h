@@ -70,7 +70,9 @@ class FilmTemperature {
   /// nodes copied, the nodes between them linearly interpolated. The start of a nested solve.
   void interpolate_from(const FilmTemperature& coarse);
 
-  [[nodiscard]] ColumnFlow column_flow(std::size_t i, double p, double dpdx, double h) const;
+  /// The flow at column i; with `dln_eta_dT`, also ∂ln η/∂T per film node [1/K].
+  [[nodiscard]] ColumnFlow column_flow(std::size_t i, double p, double dpdx, double h,
+                                       std::vector<double>* dln_eta_dT = nullptr) const;
   /// The flow at column i for the pressure and film fields (∂p/∂x by central differences).
   [[nodiscard]] ColumnFlow column_flow(std::size_t i, const std::vector<double>& p, const std::vector<double>& h) const {
     return column_flow(i, p[i], dpdx_at(p, i, dx_), h[i]);

@@ -66,15 +66,35 @@ double ThermalRheology::ambient_viscosity(double T) const {
   return ambient_density(T) * walther_kinematic_viscosity(T);
 }
 
-double ThermalRheology::viscosity(double p, double T) const {
-  const double pressure_factor = std::pow(1.0 + std::max(p, 0.0) / roelands_p0, z_);
-  if (walther_) {
-    const double eta_T = ambient_viscosity(T);
-    return eta_T * std::exp((std::log(eta_T) + roelands_ln_eta_inf) * (pressure_factor - 1.0));
+double ThermalRheology::viscosity(double p, double T) const { return at_pressure(p).viscosity(T); }
+
+ThermalRheology::AtPressure ThermalRheology::at_pressure(double p) const {
+  AtPressure a;
+  a.r_ = this;
+  a.pressure_factor_ = std::pow(1.0 + std::max(p, 0.0) / roelands_p0, z_);
+  return a;
+}
+
+double ThermalRheology::AtPressure::viscosity(double T, double* dln_dT) const {
+  const ThermalRheology& r = *r_;
+  if (r.walther_) {
+    // ln η = PF·ln η_T + ln η∞⁻¹·(PF − 1): ∂ln η/∂T = PF·(∂ln ρ/∂T + ∂ln ν/∂T), and from
+    // lg lg(ν + 0.7) = A·lg T + B (ν in mm²/s): ∂ln ν/∂T = (ν + 0.7)/ν·ln(ν + 0.7)·A/T.
+    const double rho = r.ambient_density(T);
+    const double nu = r.walther_->kinematic_viscosity_mm2_s(T);
+    const double eta_T = rho * nu * 1e-6;
+    if (dln_dT)
+      *dln_dT = pressure_factor_ * (-iso15144_density_slope / rho +
+                                    (nu + 0.7) / nu * std::log(nu + 0.7) * r.walther_->slope() / T);
+    return eta_T * std::exp((std::log(eta_T) + roelands_ln_eta_inf) * (pressure_factor_ - 1.0));
   }
-  const double theta = (T - roelands_temperature) / (T0_ - roelands_temperature);
-  return eta0_ * std::exp((std::log(eta0_) + roelands_ln_eta_inf) *
-                          (-1.0 + pressure_factor * std::pow(theta, -S0_)));
+  // ln η = ln η0 + (ln η0 + 9.67)·[−1 + PF·θ^(−S0)], θ = (T − 138)/(T0 − 138):
+  // ∂ln η/∂T = −(ln η0 + 9.67)·PF·S0·θ^(−S0)/(T − 138).
+  const double theta = (T - roelands_temperature) / (r.T0_ - roelands_temperature);
+  const double a = std::log(r.eta0_) + roelands_ln_eta_inf;
+  const double term = pressure_factor_ * std::pow(theta, -r.S0_);
+  if (dln_dT) *dln_dT = -a * term * r.S0_ / (T - roelands_temperature);
+  return r.eta0_ * std::exp(a * (-1.0 + term));
 }
 
 double ThermalRheology::density(double p, double T) const {

@@ -27,6 +27,21 @@ class ThermalRheology {
   ThermalRheology(const model::ThermalLubricant& data, double inlet_temperature);
 
   [[nodiscard]] double viscosity(double p, double T) const;      ///< η(p, T)
+
+  /// η(p, T) along one pressure: Roelands' pressure factor (1 + p/p0)^z is evaluated once
+  /// (a film column's nodes share p, and the temperature sweeps hold p frozen), so each
+  /// temperature costs one pow (Roelands form) and ∂ln η/∂T comes analytically with it.
+  class AtPressure {
+   public:
+    /// η(p, T) (the same arithmetic as viscosity(p, T)); with `dln_dT`, ∂ln η/∂T [1/K] there.
+    [[nodiscard]] double viscosity(double T, double* dln_dT = nullptr) const;
+
+   private:
+    friend class ThermalRheology;
+    const ThermalRheology* r_ = nullptr;
+    double pressure_factor_ = 1.0;
+  };
+  [[nodiscard]] AtPressure at_pressure(double p) const;
   [[nodiscard]] double density(double p, double T) const;        ///< ρ(p, T)
   /// (1/ρ)·∂ρ/∂T at (p, T) [1/K] (the compression-work coefficient of the energy equation).
   [[nodiscard]] double thermal_expansion(double p, double T) const;

@@ -5,7 +5,6 @@
 namespace gearbench::lubricant {
 
 namespace {
-constexpr double walther_offset = 0.7;     // [mm²/s], ASTM D341
 
 double lglg(double nu_mm2_s) { return std::log10(std::log10(nu_mm2_s + walther_offset)); }
 }  // namespace

@@ -6,6 +6,7 @@ namespace gearbench::lubricant {
 inline constexpr double celsius_zero = 273.15;  ///< [K]
 /// −dρ/dT of ISO/TR 15144-1 (20) [kg/(m³·K)].
 inline constexpr double iso15144_density_slope = 0.7;
+inline constexpr double walther_offset = 0.7;  ///< [mm²/s], the 0.7 in lg lg(ν + 0.7) (ASTM D341)
 
 /// ASTM D341 (Ubbelohde–Walther) through two points:
 ///   lg lg(ν + 0.7) = A·lg T + B,  ν in mm²/s, T in K
