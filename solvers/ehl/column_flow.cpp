@@ -25,7 +25,7 @@ double film_integral(const std::vector<double>& y) {
 }
 
 double eyring_wall_stress(const std::vector<double>& zeta, const std::vector<double>& viscosity, double sliding,
-                          double dpdx, double h, double eyring_stress) {
+                          double dpdx, double h, double eyring_stress, std::optional<double> guess) {
   const std::size_t nz = zeta.size();
   const double dz = 1.0 / static_cast<double>(nz - 1);
   const double mean_rate = sliding / h;  // (U_b − U_a)/h: the column's mean shear rate
@@ -40,15 +40,17 @@ double eyring_wall_stress(const std::vector<double>& zeta, const std::vector<dou
   const double scale = std::max(std::abs(lo), std::abs(hi));
   if (!(hi - lo > 1e-14 * scale)) return lo;
   // Safeguarded Newton on F(τ_a) = Σ w_j·γ̇_j − rate, F′ = Σ w_j·cosh(τ_j/τ0)/η_j > 0 (a step
-  // leaving the bracket, or an overflowing sinh, is replaced by bisection).
-  double tau_a = 0.5 * (lo + hi);
+  // leaving the bracket, or an overflowing sinh, is replaced by bisection), from the guess
+  // (the column's root of the last sweep) when it lies inside the bracket, else its middle.
+  // cosh = √(1 + sinh²) from the sinh F needs (the slope only steers the steps).
+  double tau_a = guess && *guess > lo && *guess < hi ? *guess : 0.5 * (lo + hi);
   for (int it = 0; it < 200; ++it) {
     double F = -mean_rate, dF = 0.0;
     for (std::size_t j = 0; j < nz; ++j) {
       const double w = (j == 0 || j + 1 == nz) ? 0.5 * dz : dz;
-      const double tau = tau_a + dpdx * h * zeta[j];
-      F += w * lubricant::eyring_shear_rate(tau, viscosity[j], eyring_stress);
-      dF += w * std::cosh(tau / eyring_stress) / viscosity[j];
+      const double sh = std::sinh((tau_a + dpdx * h * zeta[j]) / eyring_stress);
+      F += w * (eyring_stress / viscosity[j] * sh);  // γ̇_j, as lubricant::eyring_shear_rate
+      dF += w * std::sqrt(1.0 + sh * sh) / viscosity[j];
     }
     if (F == 0.0) return tau_a;
     (F < 0.0 ? lo : hi) = tau_a;
@@ -62,7 +64,8 @@ double eyring_wall_stress(const std::vector<double>& zeta, const std::vector<dou
 }
 
 ColumnFlow column_flow(const std::vector<double>& zeta, std::vector<double> viscosity, std::vector<double> density,
-                       double Ua, double Ub, double dpdx, double h, std::optional<double> eyring_stress) {
+                       double Ua, double Ub, double dpdx, double h, std::optional<double> eyring_stress,
+                       std::optional<double> wall_stress_guess) {
   const std::size_t nz = zeta.size();
   const double dz = 1.0 / static_cast<double>(nz - 1);
   const double dU = Ub - Ua;
@@ -71,7 +74,8 @@ ColumnFlow column_flow(const std::vector<double>& zeta, std::vector<double> visc
   c.rho = std::move(density);
   c.eta_star = c.viscosity;
   if (eyring_stress) {
-    const double tau_a = eyring_wall_stress(zeta, c.viscosity, dU, dpdx, h, *eyring_stress);
+    const double tau_a = eyring_wall_stress(zeta, c.viscosity, dU, dpdx, h, *eyring_stress, wall_stress_guess);
+    c.eyring_wall_stress = tau_a;
     for (std::size_t j = 0; j < nz; ++j)
       c.eta_star[j] = lubricant::eyring_equivalent_viscosity(tau_a + dpdx * h * zeta[j], c.viscosity[j], *eyring_stress);
   }

@@ -31,6 +31,7 @@ struct ColumnFlow {
   std::vector<double> f0, f1;                      ///< ∫dζ/η*, ∫ζdζ/η* from the wall a
   double eta_e = 0.0, eta_e_prime = 0.0;           ///< η_e, η′_e [Pa·s]
   double rho_e = 0.0, rho_e1 = 0.0, rho_e2 = 0.0;  ///< ρ_e, ρ′_e·η-scaled, ρ″_e (ζ form)
+  double eyring_wall_stress = 0.0;                 ///< τ_a, the Eyring root (0 for a Newtonian film) [Pa]
   /// (ρ/η)_e = 12(η_e·ρ′_e/η′_e − ρ″_e): the Poiseuille coefficient.
   [[nodiscard]] double rho_over_eta_e() const { return 12.0 * (eta_e * rho_e1 / eta_e_prime - rho_e2); }
   /// ρ* = [ρ′_e·η_e·(U_b − U_a) + ρ_e·U_a]/U: the wedge density.
@@ -43,12 +44,14 @@ struct ColumnFlow {
 /// density per node, surface speeds U_a, U_b, pressure gradient ∂p/∂x and film h; with
 /// `eyring_stress` τ0 [Pa] the film is Ree–Eyring, without it Newtonian.
 ColumnFlow column_flow(const std::vector<double>& zeta, std::vector<double> viscosity, std::vector<double> density,
-                       double Ua, double Ub, double dpdx, double h, std::optional<double> eyring_stress);
+                       double Ua, double Ub, double dpdx, double h, std::optional<double> eyring_stress,
+                       std::optional<double> wall_stress_guess = std::nullopt);
 
 /// The Ree–Eyring wall stress τ_a of a column: the root of the trapezoidal no-slip condition
-/// Σ w_j·γ̇_j(τ_a + ∂p/∂x·h·ζ_j) = (U_b − U_a)/h. Exposed for its tests.
+/// Σ w_j·γ̇_j(τ_a + ∂p/∂x·h·ζ_j) = (U_b − U_a)/h. Exposed for its tests. `guess` (a root
+/// nearby, e.g. the column's of the last sweep) only shortens the Newton steps.
 double eyring_wall_stress(const std::vector<double>& zeta, const std::vector<double>& viscosity, double sliding,
-                          double dpdx, double h, double eyring_stress);
+                          double dpdx, double h, double eyring_stress, std::optional<double> guess = std::nullopt);
 
 /// ∫₀¹ y dζ on uniform nodes: composite Simpson, with Simpson's 3/8 rule on the last three
 /// intervals when their number is odd; both are exact for cubics, so the isothermal

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <gsl/gsl_linalg.h>
+#include <limits>
 #include <stdexcept>
 
 #include "model/errors.h"
@@ -90,6 +91,7 @@ FilmTemperature::FilmTemperature(std::vector<double> x, double Ua, double Ub, do
   T_.assign(x_.size(), std::vector<double>(zeta_.size(), T0_));
   for (auto& body : Ts_) body.assign(x_.size(), std::vector<double>(s_.size(), T0_));
   Q_.assign(x_.size(), std::vector<double>(zeta_.size(), 0.0));
+  wall_stress_.assign(x_.size(), std::numeric_limits<double>::quiet_NaN());
 }
 
 void FilmTemperature::interpolate_from(const FilmTemperature& coarse) {
@@ -106,6 +108,9 @@ void FilmTemperature::interpolate_from(const FilmTemperature& coarse) {
   fill(Ts_[0], coarse.Ts_[0]);
   fill(Ts_[1], coarse.Ts_[1]);
   fill(Q_, coarse.Q_);
+  for (std::size_t i = 0; i < n; ++i)
+    wall_stress_[i] = i % 2 == 0 ? coarse.wall_stress_[i / 2]
+                                 : 0.5 * (coarse.wall_stress_[i / 2] + coarse.wall_stress_[i / 2 + 1]);
 }
 
 double FilmTemperature::dpdx_at(const std::vector<double>& p, std::size_t i, double dx) {
@@ -124,7 +129,9 @@ ColumnFlow FilmTemperature::column_flow(std::size_t i, double p, double dpdx, do
     eta[j] = at_p.viscosity(T_[i][j], dln_eta_dT ? &(*dln_eta_dT)[j] : nullptr);
     rho[j] = rheology_.density(p, T_[i][j]);
   }
-  return ehl::column_flow(zeta_, std::move(eta), std::move(rho), Ua_, Ub_, dpdx, h, eyring_stress_);
+  std::optional<double> guess;
+  if (std::isfinite(wall_stress_[i])) guess = wall_stress_[i];
+  return ehl::column_flow(zeta_, std::move(eta), std::move(rho), Ua_, Ub_, dpdx, h, eyring_stress_, guess);
 }
 
 std::vector<double> FilmTemperature::mass_flux_profile(const ColumnFlow& flow, double h) const {
@@ -141,6 +148,7 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
   const double dpdx = dpdx_at(p, i, dx_);
   std::vector<double> dln_eta;  // ∂ln η/∂T per film node, for the source slope
   const ColumnFlow flow = column_flow(i, p[i], dpdx, h[i], &dln_eta);
+  if (eyring_stress_) wall_stress_[i] = flow.eyring_wall_stress;
   const double k = rheology_.data().thermal_conductivity, c = rheology_.data().specific_heat;
   const double hi = h[i];
   // ∂Q/∂x at fixed ζ from the neighbouring columns of the last sweep.

@@ -103,6 +103,7 @@ class FilmTemperature {
   std::vector<std::vector<double>> T_;                 ///< film [i][j]
   std::array<std::vector<std::vector<double>>, 2> Ts_; ///< solids [body][i][k]
   std::vector<std::vector<double>> Q_;                 ///< Q(x_i, ζ_j) of the last sweep [kg/(m·s)]
+  std::vector<double> wall_stress_;  ///< each column's Eyring root τ_a of the last sweep (NaN: none yet), a Newton start
 };
 
 }  // namespace gearbench::ehl
