@@ -188,7 +188,17 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
       h[i] = std::max(current.H[i], 0.0) * hs;
     }
     const auto before = field.film();
-    field.solve(p, h, 1e-4, options_.sweeps_per_iteration);
+    // Sweeps to 1e-4 K, or to 3 % of the last iteration's temperature change while that is
+    // larger: resolving the field far below what the next iteration will change wastes sweeps
+    // (the fixed point is the same: there the change, and so the tolerance, goes to 1e-4 K).
+    // Measured (641 nodes, nested): 0.03 cuts the column solves by 34–48 % with the same
+    // iteration counts on the sliding Newtonian/Eyring and the Eyring roller contacts; 0.1
+    // and 0.3 cut more but cost the Newtonian sliding or the roller contact iterations.
+    constexpr double sweep_fraction = 0.03;
+    const double sweep_tolerance = r.temperature_change_history.empty()
+                                       ? 1e-4
+                                       : std::max(1e-4, sweep_fraction * r.temperature_change_history.back());
+    field.solve(p, h, sweep_tolerance, options_.sweeps_per_iteration);
     // Generalized-Reynolds factors relative to the isothermal coefficients at the same p.
     bool finite = true;
     for (std::size_t i = 0; i < n; ++i) {
