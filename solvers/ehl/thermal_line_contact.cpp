@@ -217,10 +217,20 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
       state.flow_factor[i] = std::exp(log_factors[i]);
       state.wedge_factor[i] = std::exp(log_factors[n + i]);
     }
-    // A few cycles per iteration while the temperature still moves; the iteration ends only
-    // on a pressure solve that met the multigrid tolerance.
+    // A few cycles per iteration while the temperature still moves, and (inexact Newton's
+    // forcing) a pressure tolerance that follows the factor residual: 1e-5 of it, between
+    // grid.tolerance and 1e-5. A pressure resolved far below the factors' own change is
+    // thrown away by the next iteration. The iteration ends only on a pressure solve that
+    // met grid.tolerance itself (`full_solve`). Measured (641 nodes, nested): pressure cycles
+    // 139 → 97 (sliding), 238 → 143 (sliding Eyring), 351 → 212 (Eyring roller; 23 → 28
+    // iterations); h_min moves ≤ 5e-6. Forcing 1e-6 saves half as many cycles.
+    constexpr double pressure_forcing = 1e-5;
     EhlOptions inner = grid;
-    if (!temperature_settled) inner.max_cycles = std::min(inner.max_cycles, options_.cycles_per_iteration);
+    if (!temperature_settled) {
+      inner.max_cycles = std::min(inner.max_cycles, options_.cycles_per_iteration);
+      inner.tolerance = std::max(grid.tolerance, std::min(1e-5, pressure_forcing * r.factor_residual_history.back()));
+    }
+    const bool full_solve = inner.tolerance <= grid.tolerance;
     EhlResult next = FasMultigrid(problem, inner, state).solve(WarmStart{current.P, current.H0});
     r.pressure_cycles += next.cycles;
     r.work_units += next.work_units;
@@ -240,7 +250,7 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
     const double tolerance = options_.temperature_tolerance * std::max(rise, 10.0);
     temperature_settled = it > 0 && change <= tolerance && film_change <= options_.film_tolerance &&
                           remaining_film_error(r.h_min_history, r.factor_residual_history) <= options_.film_tolerance;
-    if (temperature_settled && current.converged) {
+    if (temperature_settled && current.converged && full_solve) {
       r.succeed(fmt::format("converged: the temperature and h_min settled in {} thermal iterations "
                             "(temperature_tolerance {:.1e}, film_tolerance {:.1e}) and the last pressure solve met "
                             "grid.tolerance", r.iterations, options_.temperature_tolerance, options_.film_tolerance));
