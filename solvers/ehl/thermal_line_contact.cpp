@@ -189,8 +189,10 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
     }
     const auto before = field.film();
     // Sweeps to 1e-4 K, or to 3 % of the last iteration's temperature change while that is
-    // larger: resolving the field far below what the next iteration will change wastes sweeps
-    // (the fixed point is the same: there the change, and so the tolerance, goes to 1e-4 K).
+    // larger: resolving the field far below what the next iteration will change wastes sweeps.
+    // The fixed point is the same (the tolerance falls with the change); at the stop, where
+    // the change is below temperature_tolerance × rise, the field is left within a few
+    // percent of that tolerance (the sliding contact's ΔT_max moved 0.014 K of 77.9 K).
     // Measured (641 nodes, nested): 0.03 cuts the column solves by 34–48 % with the same
     // iteration counts on the sliding Newtonian/Eyring and the Eyring roller contacts; 0.1
     // and 0.3 cut more but cost the Newtonian sliding or the roller contact iterations.
