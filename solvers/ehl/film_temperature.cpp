@@ -99,18 +99,16 @@ void FilmTemperature::interpolate_from(const FilmTemperature& coarse) {
   if (coarse.x_.size() * 2 - 1 != n || coarse.zeta_.size() != zeta_.size() || coarse.s_.size() != s_.size() ||
       coarse.depth_ != depth_)
     throw std::logic_error("FilmTemperature::interpolate_from: not the same contact on the grid half as fine");
-  auto fill = [n](std::vector<std::vector<double>>& fine, const std::vector<std::vector<double>>& from) {
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < fine[i].size(); ++j)
-        fine[i][j] = i % 2 == 0 ? from[i / 2][j] : 0.5 * (from[i / 2][j] + from[i / 2 + 1][j]);
+  const auto column_mean = [](const std::vector<double>& a, const std::vector<double>& b) {
+    std::vector<double> m(a.size());
+    for (std::size_t j = 0; j < a.size(); ++j) m[j] = nodal_mean(a[j], b[j]);
+    return m;
   };
-  fill(T_, coarse.T_);
-  fill(Ts_[0], coarse.Ts_[0]);
-  fill(Ts_[1], coarse.Ts_[1]);
-  fill(Q_, coarse.Q_);
-  for (std::size_t i = 0; i < n; ++i)
-    wall_stress_[i] = i % 2 == 0 ? coarse.wall_stress_[i / 2]
-                                 : 0.5 * (coarse.wall_stress_[i / 2] + coarse.wall_stress_[i / 2 + 1]);
+  T_ = prolong_along_x(coarse.T_, column_mean);
+  Ts_[0] = prolong_along_x(coarse.Ts_[0], column_mean);
+  Ts_[1] = prolong_along_x(coarse.Ts_[1], column_mean);
+  Q_ = prolong_along_x(coarse.Q_, column_mean);
+  wall_stress_ = prolong_along_x(coarse.wall_stress_, nodal_mean);
 }
 
 double FilmTemperature::dpdx_at(const std::vector<double>& p, std::size_t i, double dx) {

@@ -51,6 +51,22 @@ struct HeatBalance {
   }
 };
 
+/// Linear prolongation along x to the grid twice as fine: coinciding nodes copied, each node
+/// between two the mean of its neighbours (`mean(a, b)`; a value per node or a column of them).
+template <class Value, class Mean>
+[[nodiscard]] std::vector<Value> prolong_along_x(const std::vector<Value>& coarse, Mean mean) {
+  std::vector<Value> fine;
+  fine.reserve(2 * coarse.size() - 1);
+  for (std::size_t I = 0; I < coarse.size(); ++I) {
+    fine.push_back(coarse[I]);
+    if (I + 1 < coarse.size()) fine.push_back(mean(coarse[I], coarse[I + 1]));
+  }
+  return fine;
+}
+
+/// The mean of two nodal values (prolong_along_x).
+[[nodiscard]] inline double nodal_mean(double a, double b) { return 0.5 * (a + b); }
+
 class FilmTemperature {
  public:
   /// x: uniform nodes [m]; Ua, Ub ≥ 0: surface speeds [m/s]; half_width: the Hertz b [m]
