@@ -288,6 +288,12 @@ model::OptionTable<ThermalEhlOptions> make_thermal_section_table() {
   t.number("temperature_tolerance", &ThermalEhlOptions::temperature_tolerance, Range{0.0, 10.0, true, true},
            {.description = "largest temperature change between iterations, relative to the film's largest rise "
                            "(at least 10 K)"});
+  t.choice("stop", &ThermalEhlOptions::stop,
+           std::vector<std::pair<std::string, CouplingStop>>{{"discretisation_error", CouplingStop::discretisation_error},
+                                                             {"tolerance", CouplingStop::tolerance}},
+           {.description = "stop the pressure-temperature iteration at grid.error_fraction of the estimated "
+                           "discretisation error of h_min and the temperature rise (never tighter than the "
+                           "tolerances), or at temperature_tolerance and film_tolerance"});
   static const auto tuning = make_thermal_tuning_table();
   t.rule([](const ThermalEhlOptions& o, const std::string& p) { tuning.validate(o, p); });
   return t;

@@ -79,11 +79,13 @@ double remaining_film_error(const std::vector<double>& h_min, const std::vector<
 struct ThermalLineContact::NestedStart {
   std::vector<double> P;            ///< dimensionless pressure
   double H0 = 0.0;
+  double h_min = 0.0;               ///< [m]
+  double temperature_rise_max = 0.0;  ///< [K]
   std::vector<double> log_factors;  ///< ln F: flow factors, then wedge factors
   std::optional<FilmTemperature> field;
   int iterations = 0;               ///< thermal iterations of this grid and its coarser ones
   int pressure_cycles = 0;          ///< multigrid cycles of this grid and its coarser ones
-  double work_units = 0.0;          ///< in the work units of each grid's own finest level
+  double work_units = 0.0;          ///< in this grid's sweeps, its coarser grids' work included
 };
 
 ThermalEhlResult ThermalLineContact::try_solve() const {
@@ -128,51 +130,95 @@ ThermalEhlResult ThermalLineContact::solve_nested(const EhlOptions& grid, Nested
   return coupled(grid, start ? &*start : nullptr, end);
 }
 
+ThermalLineContact::CouplingTolerances ThermalLineContact::tolerances(const EhlOptions& grid, const NestedStart* nested,
+                                                                      double isothermal_error, double h_min,
+                                                                      double rise) const {
+  CouplingTolerances t{.film = options_.film_tolerance,
+                       .temperature = options_.temperature_tolerance * std::max(rise, 10.0),
+                       .h_min_error = std::nullopt};
+  if (options_.stop != CouplingStop::discretisation_error || !(h_min > 0.0)) return t;
+  if (nested) {
+    // Richardson: with e ≈ C·Δx², f_h − f_2h ≈ −3e_h. The observed orders along x are 1.85–2.04
+    // for h_min, h_c, ΔT_max and μ (docs/thermal-ehl-model.md, "Convergence").
+    constexpr double richardson = 3.0;
+    t.h_min_error = std::abs(h_min - nested->h_min) / (richardson * h_min);
+    t.temperature = std::max(t.temperature, grid.error_fraction * std::abs(rise - nested->temperature_rise_max) / richardson);
+  } else if (std::isfinite(isothermal_error)) {
+    t.h_min_error = isothermal_error;  // the isothermal solve's own estimate on this grid (its FMG levels)
+  }
+  if (t.h_min_error) t.film = std::max(t.film, grid.error_fraction * *t.h_min_error);
+  return t;
+}
+
 ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const NestedStart* nested,
                                              NestedStart* end) const {
   const LineContactProblem problem(data_);
-  const EhlResult isothermal = LineContactSolver(problem, grid).try_solve();
   ThermalEhlResult r;
   r.rheology = options_.film.rheology;
-  r.isothermal_h_central = isothermal.h_central;
-  r.isothermal_h_min = isothermal.h_min;
-  r.isothermal_p_max = isothermal.p_max;
-  r.isothermal_friction_coefficient = isothermal.friction_coefficient;
-  r.pressure_cycles = isothermal.cycles;
-  r.work_units = isothermal.work_units;
-  if (!isothermal.converged) {  // the start did not converge: a status, not an exception (issue 21)
-    r.fail("thermal EHL: the isothermal start did not converge: " + isothermal.message);
-    r.pressure = isothermal;
-    return r;
+  // The isothermal solution: the start without a nested one, and the comparison the finest grid
+  // reports. A nested grid below the finest needs neither.
+  EhlResult current;
+  double isothermal_error = std::numeric_limits<double>::quiet_NaN();
+  if (!nested || !end) {
+    current = LineContactSolver(problem, grid).try_solve();
+    isothermal_error = current.error_estimate;
+    r.isothermal_h_central = current.h_central;
+    r.isothermal_h_min = current.h_min;
+    r.isothermal_p_max = current.p_max;
+    r.isothermal_friction_coefficient = current.friction_coefficient;
+    r.pressure_cycles = current.cycles;
+    r.work_units = current.work_units;
+    if (!current.converged) {  // the start did not converge: a status, not an exception (issue 21)
+      r.fail("thermal EHL: the isothermal start did not converge: " + current.message);
+      r.pressure = std::move(current);
+      return r;
+    }
   }
+  // A pressure solve while the factors still move: a few cycles to a tolerance that follows the
+  // factor residual (inexact Newton's forcing), 1e-5 of it, between grid.tolerance and 1e-5. A
+  // pressure resolved far below the factors' own change is thrown away by the next iteration.
+  // Measured (641 nodes, nested): pressure cycles 139 → 97 (sliding), 238 → 143 (sliding
+  // Eyring), 351 → 212 (Eyring roller; 23 → 28 iterations); h_min moves ≤ 5e-6. Forcing 1e-6
+  // saves half as many cycles.
+  const auto inexact = [&](double factor_residual) {
+    constexpr double pressure_forcing = 1e-5;
+    EhlOptions inner = grid;
+    inner.max_cycles = std::min(inner.max_cycles, options_.cycles_per_iteration);
+    inner.tolerance = std::max(grid.tolerance, std::min(1e-5, pressure_forcing * factor_residual));
+    return inner;
+  };
 
-  const std::size_t n = isothermal.X.size();
-  const double ls = problem.length_scale(), ps = problem.pressure_scale(), hs = problem.film_scale();
-  std::vector<double> x(n), p(n), h(n);
-  for (std::size_t i = 0; i < n; ++i) x[i] = isothermal.X[i] * ls;
-  FilmTemperature field(x, data_.u1, data_.u2, problem.hertz_half_width(), rheology_, solids_, options_.film);
-  const double T0 = rheology_.inlet_temperature();
-
-  EhlResult current = isothermal;
+  const std::size_t n = nested ? 2 * nested->P.size() - 1 : current.X.size();
   ContactState state;
   state.flow_factor.assign(n, 1.0);
   state.wedge_factor.assign(n, 1.0);
   std::vector<double> log_factors(2 * n, 0.0), log_image(2 * n);
   if (nested) {  // start from the converged solution of the grid half as fine
-    field.interpolate_from(*nested->field);
     log_factors = prolong(nested->log_factors, 2);
     for (std::size_t i = 0; i < n; ++i) {
       state.flow_factor[i] = std::exp(log_factors[i]);
       state.wedge_factor[i] = std::exp(log_factors[n + i]);
     }
-    EhlResult first = FasMultigrid(problem, grid, state).solve(WarmStart{prolong(nested->P, 1), nested->H0});
-    r.pressure_cycles += first.cycles;
-    r.work_units += first.work_units;
+    EhlResult first = FasMultigrid(problem, inexact(1.0), state).solve(WarmStart{prolong(nested->P, 1), nested->H0});
+    r.pressure_cycles += first.cycles + nested->pressure_cycles;
+    // A sweep of the grid half as fine costs its share of nodes of one of this grid's.
+    r.work_units += first.work_units + nested->work_units * static_cast<double>(nested->P.size()) / static_cast<double>(n);
     r.coarse_grid_iterations = nested->iterations;
-    r.pressure_cycles += nested->pressure_cycles;
-    r.work_units += nested->work_units;  // summed as the multigrid reports them, each on its own grid
-    if (std::isfinite(first.h_min)) current = std::move(first);
+    if (!std::isfinite(first.h_min)) {
+      r.fail(fmt::format("thermal EHL on {} nodes: the pressure solve from the nested start is not finite", n));
+      r.pressure = std::move(first);
+      return r;
+    }
+    current = std::move(first);
   }
+
+  const double ls = problem.length_scale(), ps = problem.pressure_scale(), hs = problem.film_scale();
+  std::vector<double> x(n), p(n), h(n);
+  for (std::size_t i = 0; i < n; ++i) x[i] = current.X[i] * ls;
+  FilmTemperature field(x, data_.u1, data_.u2, problem.hertz_half_width(), rheology_, solids_, options_.film);
+  if (nested) field.interpolate_from(*nested->field);
+  const double T0 = rheology_.inlet_temperature();
+
   // The coupling is the fixed point F = G(F) of the factors, accelerated by Anderson mixing
   // (anderson_mixing.h) on their logarithms: ln F keeps every factor positive whatever the
   // extrapolation, and weighs a node's change relative to its factor, which spans 1e-2 … 1e5
@@ -218,19 +264,8 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
       state.flow_factor[i] = std::exp(log_factors[i]);
       state.wedge_factor[i] = std::exp(log_factors[n + i]);
     }
-    // A few cycles per iteration while the temperature still moves, and (inexact Newton's
-    // forcing) a pressure tolerance that follows the factor residual: 1e-5 of it, between
-    // grid.tolerance and 1e-5. A pressure resolved far below the factors' own change is
-    // thrown away by the next iteration. The iteration ends only on a pressure solve that
-    // met grid.tolerance itself (`full_solve`). Measured (641 nodes, nested): pressure cycles
-    // 139 → 97 (sliding), 238 → 143 (sliding Eyring), 351 → 212 (Eyring roller; 23 → 28
-    // iterations); h_min moves ≤ 5e-6. Forcing 1e-6 saves half as many cycles.
-    constexpr double pressure_forcing = 1e-5;
-    EhlOptions inner = grid;
-    if (!temperature_settled) {
-      inner.max_cycles = std::min(inner.max_cycles, options_.cycles_per_iteration);
-      inner.tolerance = std::max(grid.tolerance, std::min(1e-5, pressure_forcing * r.factor_residual_history.back()));
-    }
+    // The iteration ends only on a pressure solve that met grid.tolerance itself (`full_solve`).
+    const EhlOptions inner = temperature_settled ? grid : inexact(r.factor_residual_history.back());
     const bool full_solve = inner.tolerance <= grid.tolerance;
     EhlResult next = FasMultigrid(problem, inner, state).solve(WarmStart{current.P, current.H0});
     r.pressure_cycles += next.cycles;
@@ -248,13 +283,19 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
     double rise = 0.0;
     for (const auto& column : field.film())
       for (double T : column) rise = std::max(rise, T - T0);
-    const double tolerance = options_.temperature_tolerance * std::max(rise, 10.0);
-    temperature_settled = it > 0 && change <= tolerance && film_change <= options_.film_tolerance &&
-                          remaining_film_error(r.h_min_history, r.factor_residual_history) <= options_.film_tolerance;
+    const CouplingTolerances t = tolerances(grid, nested, isothermal_error, current.h_min, rise);
+    r.film_tolerance_used = t.film;
+    r.temperature_tolerance_used = t.temperature;
+    r.h_min_error_estimate = t.h_min_error;
+    temperature_settled = it > 0 && change <= t.temperature && film_change <= t.film &&
+                          remaining_film_error(r.h_min_history, r.factor_residual_history) <= t.film;
     if (temperature_settled && current.converged && full_solve) {
-      r.succeed(fmt::format("converged: the temperature and h_min settled in {} thermal iterations "
-                            "(temperature_tolerance {:.1e}, film_tolerance {:.1e}) and the last pressure solve met "
-                            "grid.tolerance", r.iterations, options_.temperature_tolerance, options_.film_tolerance));
+      r.succeed(fmt::format("converged: the temperature and h_min settled in {} thermal iterations (temperature "
+                            "change ≤ {:.2e} K, h_min ≤ {:.1e}{}) and the last pressure solve met grid.tolerance",
+                            r.iterations, t.temperature, t.film,
+                            t.h_min_error ? fmt::format(": {:.2g} of the estimated discretisation error {:.2e}",
+                                                        grid.error_fraction, *t.h_min_error)
+                                          : std::string()));
       break;
     }
   }
@@ -278,6 +319,8 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
   if (end) {
     end->P = current.P;
     end->H0 = current.H0;
+    end->h_min = r.h_min;
+    end->temperature_rise_max = r.temperature_rise_max;
     end->log_factors = log_factors;
     end->field.emplace(field);
     end->iterations = r.iterations + r.coarse_grid_iterations;
