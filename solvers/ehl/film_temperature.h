@@ -105,7 +105,9 @@ class FilmTemperature {
   [[nodiscard]] double inlet_temperature() const { return T0_; }
 
  private:
-  void solve_column(std::size_t i, const std::vector<double>& p, const std::vector<double>& h);
+  /// Column i, with ∂Q/∂x from `Q_last`, the mass-flux profiles of the last half-sweep.
+  void solve_column(std::size_t i, const std::vector<double>& p, const std::vector<double>& h,
+                    const std::vector<std::vector<double>>& Q_last);
   [[nodiscard]] std::vector<double> mass_flux_profile(const ColumnFlow& flow, double h) const;
 
   std::vector<double> x_;
