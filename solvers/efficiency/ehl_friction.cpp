@@ -74,18 +74,17 @@ ehl::EhlOptions EhlFriction::default_grid() {
 }
 
 ehl::ThermalEhlOptions EhlFriction::default_thermal_options() {
-  // Measured on seed 004's path (cases/efficiency_seed004_ehl_thermal.json): h_min settled to
-  // 1e-3 moves μ by 2e-4 relative (the traction is an integral of the wall stress), and 81 nodes
-  // give the mean μ within 0.8 % of 161 nodes (0.05795 against 0.05751) at a quarter of the cost.
-  // The coupling is Anderson's with depth 5 and β 0.3, the solver's default before issue 26's
-  // fine grids (now 0.15, for 1281 and 2561 nodes; 81 nodes are not nested): β 0.15 leaves a
-  // contact of the dynamics test (M 11.6, L 19) with a non-finite temperature on 81 nodes
-  // (twelfth session, and again with the nested scheme's defaults), 0.3 settles it.
+  // The solver's defaults on 81 nodes. Measured on seed 004's path
+  // (cases/efficiency_seed004_ehl_thermal.json, fourteenth session): mean μ 0.05795 on 81
+  // nodes, 0.05753 on 161 and 0.05737 on 641 (the mean efficiency 99.099, 99.105, 99.107 %),
+  // at 2.8 s, 11 s and 90 s. Until the coupling stopped at its discretisation error and the
+  // temperature sweeps took ∂Q/∂x from one iterate, this law needed Anderson's β 0.3, h_min
+  // settled to 1e-3 only and 300 iterations; β 0.15 left a contact of the dynamics test
+  // (M 11.6, L 19) with a non-finite temperature on 81 nodes. It does not now. Not the
+  // default grid: on 641 nodes a near-pure-rolling contact of that test (M 15.9, L 18.8)
+  // runs away in its first temperature sweep (docs/thermal-ehl-model.md).
   ehl::ThermalEhlOptions o;
   o.grid.nodes = 81;
-  o.factor_relaxation = 0.3;
-  o.film_tolerance = 1e-3;
-  o.max_iterations = 300;
   return o;
 }
 
