@@ -691,6 +691,9 @@ TEST(Cli, ThermalEhlRunsAndValidates) {
   EXPECT_GT(r["temperature_rise_max_K"].get<double>(), 10.0);
   EXPECT_TRUE(r.contains("friction_coefficient_eyring"));
   EXPECT_EQ(r["temperature_field"]["film_K"].size(), r["profile"]["x_m"].size());
+  // The stop's tolerances as used (161 nodes: no nested grid, the isothermal estimate).
+  EXPECT_GE(r["diagnostics"]["stop"]["film_tolerance_used"].get<double>(), 1e-5);
+  EXPECT_GT(r["diagnostics"]["stop"]["h_min_error_estimate"].get<double>(), 0.0);
 
   expect_patches_refused(point, {
       {R"("lubricant": {"nu40_mm2_s": 320})", "give either viscosity_Pa_s"},
@@ -698,6 +701,7 @@ TEST(Cli, ThermalEhlRunsAndValidates) {
       {R"("solids": {"density_kg_m3": [7850]})", "solids.density_kg_m3"},
       {R"("thermal": {"heat_sources": "radiation"})", "thermal.heat_sources"},
       {R"("thermal": {"film_nodes": 2})", "thermal.film_nodes = 2"},
+      {R"("thermal": {"stop": "residual"})", "thermal.stop = \"residual\": allowed values are discretisation_error, tolerance"},
       {R"("rheology": "bingham")", "rheology = \"bingham\": allowed values are newtonian, eyring"},
       {R"("rheology": "eyring", "lubricant": {"eyring_stress_MPa": null})", "lubricant.eyring_stress_MPa"},
       {R"("rheology": "eyring", "lubricant": {"eyring_stress_MPa": 0})", "lubricant.eyring_stress_MPa = 0"},

@@ -36,6 +36,11 @@ json thermal_result_json(const ehl::ThermalEhlResult& r, bool fields) {
                                                 finite_or_null(r.heat.depth_loss[1])}}}},
       {"diagnostics", {{"converged", r.converged}, {"iterations", r.iterations},
                        {"coarse_grid_iterations", r.coarse_grid_iterations},
+                       {"stop", {{"film_tolerance_used", finite_or_null(r.film_tolerance_used)},
+                                 {"temperature_tolerance_used_K", finite_or_null(r.temperature_tolerance_used)},
+                                 {"h_min_error_estimate", r.h_min_error_estimate
+                                                              ? finite_or_null(*r.h_min_error_estimate)
+                                                              : json(nullptr)}}},
                        {"temperature_change_history_K", finite_vector(r.temperature_change_history)},
                        {"h_min_history_m", finite_vector(r.h_min_history)},
                        {"pressure_cycles", r.pressure_cycles}, {"work_units", r.work_units},
