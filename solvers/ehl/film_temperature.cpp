@@ -90,6 +90,7 @@ FilmTemperature::FilmTemperature(std::vector<double> x, double Ua, double Ub, do
   }
   T_.assign(x_.size(), std::vector<double>(zeta_.size(), T0_));
   for (auto& body : Ts_) body.assign(x_.size(), std::vector<double>(s_.size(), T0_));
+  flows_.resize(x_.size());
   Q_.assign(x_.size(), std::vector<double>(zeta_.size(), 0.0));
   wall_stress_.assign(x_.size(), std::numeric_limits<double>::quiet_NaN());
 }
@@ -107,7 +108,6 @@ void FilmTemperature::interpolate_from(const FilmTemperature& coarse) {
   T_ = prolong_along_x(coarse.T_, column_mean);
   Ts_[0] = prolong_along_x(coarse.Ts_[0], column_mean);
   Ts_[1] = prolong_along_x(coarse.Ts_[1], column_mean);
-  Q_ = prolong_along_x(coarse.Q_, column_mean);
   wall_stress_ = prolong_along_x(coarse.wall_stress_, nodal_mean);
 }
 
@@ -140,21 +140,26 @@ std::vector<double> FilmTemperature::mass_flux_profile(const ColumnFlow& flow, d
   return Q;
 }
 
-void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, const std::vector<double>& h,
-                                   const std::vector<std::vector<double>>& Q_last) {
+void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, const std::vector<double>& h) {
   const std::size_t nz = zeta_.size(), ns = s_.size(), n = x_.size();
   const double dz = 1.0 / static_cast<double>(nz - 1);
   const double dpdx = dpdx_at(p, i, dx_);
-  std::vector<double> dln_eta;  // ∂ln η/∂T per film node, for the source slope
-  const ColumnFlow flow = column_flow(i, p[i], dpdx, h[i], &dln_eta);
-  if (eyring_stress_) wall_stress_[i] = flow.eyring_wall_stress;
+  const ColumnFlow& flow = flows_[i];
+  // The shear stress at the column's shear rate and this sweep's temperature, and ∂ln η/∂T
+  // per film node for the source slope.
+  std::vector<double> stress(nz), dln_eta(nz);
+  const auto at_p = rheology_.at_pressure(p[i]);
+  for (std::size_t j = 0; j < nz; ++j) {
+    const double eta = at_p.viscosity(T_[i][j], &dln_eta[j]), rate = flow.shear_rate[j];
+    stress[j] = eyring_stress_ ? std::copysign(lubricant::eyring_stress(std::abs(rate), eta, *eyring_stress_), rate)
+                               : eta * rate;
+  }
   const double k = rheology_.data().thermal_conductivity, c = rheology_.data().specific_heat;
   const double hi = h[i];
-  // ∂Q/∂x at fixed ζ from the neighbouring columns of the last half-sweep.
+  // ∂Q/∂x at fixed ζ from the neighbouring columns.
   std::vector<double> Qx(nz, 0.0);
   for (std::size_t j = 0; j < nz; ++j)
-    Qx[j] = i + 1 < n ? (Q_last[i + 1][j] - Q_last[i - 1][j]) / (2.0 * dx_) : (Q_last[i][j] - Q_last[i - 1][j]) / dx_;
-  Q_[i] = mass_flux_profile(flow, hi);
+    Qx[j] = i + 1 < n ? (Q_[i + 1][j] - Q_[i - 1][j]) / (2.0 * dx_) : (Q_[i][j] - Q_[i - 1][j]) / dx_;
 
   // Unknowns: solid a from the deepest free node up to k = 1, the film j = 0..nz−1 (the
   // walls are j = 0 and nz−1), solid b from k = 1 down to the deepest free node.
@@ -189,9 +194,9 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
     Source S;
     const double T = T_[i][j];
     if (o_.shear_heating) {
-      const double heating = flow.stress[j] * flow.shear_rate[j];
+      const double heating = stress[j] * flow.shear_rate[j];
       S.value += heating;
-      S.slope += std::min(0.0, heating * stress_response(flow.stress[j]) * dln_eta[j]);
+      S.slope += std::min(0.0, heating * stress_response(stress[j]) * dln_eta[j]);
     }
     if (o_.compression) S.value -= T * rheology_.thermal_expansion(p[i], T) * flow.u[j] * dpdx;
     return S;
@@ -273,23 +278,10 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
 double FilmTemperature::sweep(const std::vector<double>& p, const std::vector<double>& h) {
   double change = 0.0;
   const std::vector<std::vector<double>> before = T_;
-  if (Q_[0].back() == 0.0) {  // the inlet column's flux (T0 there)
-    const ColumnFlow flow = column_flow(0, p[0], dpdx_at(p, 0, dx_), h[0]);
-    Q_[0] = mass_flux_profile(flow, h[0]);
-  }
   // Symmetric sweep: downstream, where the oil and the solids carry the heat, then upstream,
   // which carries the reverse flow of the inlet back in one pass instead of one column per sweep.
-  // ∂Q/∂x from the profiles of the last half-sweep, every column at one iterate. Updated in
-  // place, the central difference took the upstream column from this sweep and the downstream
-  // one from the last: on 2561 nodes the Eyring roller's inlet backflow layer (ζ ≈ 0.78,
-  // x = −4.7 … −3.4b, 0.1–0.7 K above T0) then never settled, 0.28 K a sweep after 100 sweeps
-  // at a fixed pressure and film, and the coupling stopped at its cap of 60 iterations (117
-  // were needed before the cap). With the lagged profiles 50 sweeps reach 4.6e-3 K, and the
-  // coupling settles in 22 iterations.
-  std::vector<std::vector<double>> Q_last = Q_;
-  for (std::size_t i = 1; i < x_.size(); ++i) solve_column(i, p, h, Q_last);
-  Q_last = Q_;
-  for (std::size_t i = x_.size() - 1; i >= 1; --i) solve_column(i, p, h, Q_last);
+  for (std::size_t i = 1; i < x_.size(); ++i) solve_column(i, p, h);
+  for (std::size_t i = x_.size() - 1; i >= 1; --i) solve_column(i, p, h);
   for (std::size_t i = 0; i < x_.size(); ++i)
     for (std::size_t j = 0; j < zeta_.size(); ++j) {
       if (!std::isfinite(T_[i][j]))
@@ -301,6 +293,25 @@ double FilmTemperature::sweep(const std::vector<double>& p, const std::vector<do
 
 double FilmTemperature::solve(const std::vector<double>& p, const std::vector<double>& h, double tolerance,
                               int max_sweeps) {
+  // Each column's flow (velocity, shear rate, mass flux Q) is that of the temperatures this
+  // solve starts from, and the sweeps update the heating τ(T, γ̇)·γ̇ at that shear rate: it
+  // falls as the oil heats, which is what the source slope above assumes. Why, measured
+  // (fourteenth session):
+  // - Recomputed in every column solve, the flow is that of a frozen pressure gradient, i.e. a
+  //   frozen stress, at which an Eyring column shears faster as it heats (γ̇ = τ0/η·sinh(τ/τ0)):
+  //   on 641 nodes a near-pure-rolling contact of seed 004 (M 15.9, L 18.8; |h·∂p/∂x| = 21τ0
+  //   at 0.88b after the first pressure solve) ran away to a non-finite temperature in its first
+  //   sweeps; with the shear rate held it converges (27 + 16 iterations).
+  // - Updated in place, the central ∂Q/∂x mixed this sweep's upstream column with the last
+  //   sweep's downstream one: on 2561 nodes the Eyring roller's inlet backflow layer (ζ ≈ 0.78,
+  //   x = −4.7 … −3.4b) changed 0.28 K a sweep after 100 sweeps at a fixed pressure and film, and
+  //   the coupling stopped at its cap of 60 iterations (117 needed); now 19.
+  // At the coupling's fixed point the flow is that of the converged temperatures either way.
+  for (std::size_t i = 0; i < x_.size(); ++i) {
+    flows_[i] = column_flow(i, p[i], dpdx_at(p, i, dx_), h[i]);
+    if (eyring_stress_) wall_stress_[i] = flows_[i].eyring_wall_stress;
+    Q_[i] = mass_flux_profile(flows_[i], h[i]);
+  }
   double change = 0.0;
   for (int s = 0; s < max_sweeps; ++s) {
     change = sweep(p, h);

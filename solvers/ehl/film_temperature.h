@@ -75,10 +75,10 @@ class FilmTemperature {
                   const lubricant::ThermalRheology& rheology, const model::ThermalSolids& solids,
                   FilmTemperatureOptions options);
 
-  /// One Gauss–Seidel sweep over the columns for pressure p [Pa] and film h [m] (both on x);
-  /// returns the largest temperature change [K].
-  double sweep(const std::vector<double>& p, const std::vector<double>& h);
-  /// Sweeps until the change is below `tolerance` [K] or `max_sweeps`; returns the last change.
+  /// Sweeps for pressure p [Pa] and film h [m] (both on x) until the largest temperature change
+  /// of a sweep is below `tolerance` [K] or `max_sweeps`; returns the last change. The columns'
+  /// flow (velocity, shear rate, mass flux) is that of the temperatures the solve starts from
+  /// (.cpp: why).
   double solve(const std::vector<double>& p, const std::vector<double>& h, double tolerance, int max_sweeps);
 
   /// Takes the temperatures (film, solids) and flux profiles of the same contact on the grid
@@ -105,9 +105,9 @@ class FilmTemperature {
   [[nodiscard]] double inlet_temperature() const { return T0_; }
 
  private:
-  /// Column i, with ∂Q/∂x from `Q_last`, the mass-flux profiles of the last half-sweep.
-  void solve_column(std::size_t i, const std::vector<double>& p, const std::vector<double>& h,
-                    const std::vector<std::vector<double>>& Q_last);
+  /// One Gauss–Seidel sweep over the columns, downstream then upstream; the largest change [K].
+  double sweep(const std::vector<double>& p, const std::vector<double>& h);
+  void solve_column(std::size_t i, const std::vector<double>& p, const std::vector<double>& h);
   [[nodiscard]] std::vector<double> mass_flux_profile(const ColumnFlow& flow, double h) const;
 
   std::vector<double> x_;
@@ -120,7 +120,8 @@ class FilmTemperature {
   std::vector<double> zeta_, s_;
   std::vector<std::vector<double>> T_;                 ///< film [i][j]
   std::array<std::vector<std::vector<double>>, 2> Ts_; ///< solids [body][i][k]
-  std::vector<std::vector<double>> Q_;                 ///< Q(x_i, ζ_j) of the last sweep [kg/(m·s)]
+  std::vector<ColumnFlow> flows_;                      ///< each column's flow of this solve()
+  std::vector<std::vector<double>> Q_;                 ///< Q(x_i, ζ_j) of flows_ [kg/(m·s)]
   std::vector<double> wall_stress_;  ///< each column's Eyring root τ_a of the last sweep (NaN: none yet), a Newton start
 };
 

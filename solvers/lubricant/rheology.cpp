@@ -24,6 +24,10 @@ double eyring_shear_rate(double tau, double eta, double eyring_stress) {
   return eyring_stress / eta * std::sinh(tau / eyring_stress);
 }
 
+double eyring_stress(double shear_rate, double eta, double eyring_stress) {
+  return eyring_stress * std::asinh(eta * shear_rate / eyring_stress);
+}
+
 double eyring_equivalent_viscosity(double tau, double eta, double eyring_stress) {
   const double s = tau / eyring_stress;
   return s == 0.0 ? eta : eta * s / std::sinh(s);

@@ -363,9 +363,9 @@ const RegisterCheck roller_order(CheckSpec{
                 "(cases/tehl_point_roller_eyring.json, τ0 5 MPa) on 641, 1281 and 2561 nodes",
     .unit = "-", .tolerance = {0.5, 0},
     .justification = order_justification + "; before the nested start the 1281- and 2561-node solves stopped with "
-                     "a non-finite temperature, and until the temperature sweeps took ∂Q/∂x from one iterate "
-                     "(film_temperature.cpp) the 2561-node solve needed 70–120 iterations, past the default cap "
-                     "of 60, which this check now holds (22 measured)",
+                     "a non-finite temperature, and until the temperature sweeps held each column's flow "
+                     "(FilmTemperature::solve) the 2561-node solve needed 70–120 iterations, past the default cap "
+                     "of 60, which this check now holds (13, 18, 19 measured on 641, 1281, 2561 nodes)",
     .tier = Tier::fast,
     .run = [](const CheckContext& ctx) {
       const auto c = roller_case(ctx);
