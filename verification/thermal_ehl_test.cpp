@@ -44,6 +44,19 @@ ThermalEhlOptions small_grid() {
   return o;
 }
 
+/// The mineral oil with a Ree–Eyring stress of 5 MPa, and its film's options on `nodes`.
+model::ThermalLubricant eyring_oil() {
+  auto d = roelands_oil();
+  d.eyring_stress = 5e6;
+  return d;
+}
+ThermalEhlOptions eyring_film(int nodes) {
+  ThermalEhlOptions o;
+  o.grid.nodes = nodes;
+  o.film.rheology = lubricant::ShearRheology::eyring;
+  return o;
+}
+
 // Ubbelohde–Walther through its two defining points, to rounding (the law is fitted to them).
 TEST(ThermalRheology, WaltherPassesThroughNu40AndNu100) {
   const lubricant::ThermalRheology r(walther_oil(), T0);
@@ -138,17 +151,14 @@ TEST(ThermalLineContact, HeatBalanceCloses) {
 
 // Nested iteration (issue 26) changes the start, not the solution: the sliding contact's Eyring
 // film on 161 nodes (the unit tier also runs under ASan), nested on 81 and from the isothermal
-// start. Each stop
+// start, both stopped at the tolerances. Each stop
 // leaves h_min within about 3e-5 of the fixed point (film_tolerance 1e-5 on the estimated
 // remaining error, whose known miss on the Eyring roller is 2.6e-5: docs/thermal-ehl-model.md),
 // so the two agree within 1e-4; measured 1e-6.
 TEST(ThermalLineContact, NestedStartReachesTheSameSolution) {
-  auto oil = roelands_oil();
-  oil.eyring_stress = 5e6;
-  const lubricant::ThermalRheology rheology(oil, T0);
-  ThermalEhlOptions o;
-  o.grid.nodes = 161;
-  o.film.rheology = lubricant::ShearRheology::eyring;
+  const lubricant::ThermalRheology rheology(eyring_oil(), T0);
+  ThermalEhlOptions o = eyring_film(161);
+  o.stop = CouplingStop::tolerance;
   o.nested_above_nodes = 81;
   const auto nested = ThermalLineContact(contact(2.5, 1.5), rheology, steel(), o).solve();
   o.nested_above_nodes = 161;
@@ -167,12 +177,8 @@ TEST(ThermalLineContact, NestedStartReachesTheSameSolution) {
 // fewer iterations. Measured: estimate 0.47 %, tolerance used 4.7e-4, h_min 1.8e-5 apart,
 // 11 against 20 iterations.
 TEST(ThermalLineContact, StopsAtATenthOfItsDiscretisationError) {
-  auto oil = roelands_oil();
-  oil.eyring_stress = 5e6;
-  const lubricant::ThermalRheology rheology(oil, T0);
-  ThermalEhlOptions o;
-  o.grid.nodes = 321;
-  o.film.rheology = lubricant::ShearRheology::eyring;
+  const lubricant::ThermalRheology rheology(eyring_oil(), T0);
+  ThermalEhlOptions o = eyring_film(321);
   const auto rule = ThermalLineContact(contact(2.5, 1.5), rheology, steel(), o).solve();
   o.stop = CouplingStop::tolerance;
   const auto tight = ThermalLineContact(contact(2.5, 1.5), rheology, steel(), o).solve();
@@ -226,12 +232,9 @@ TEST(ThermalLineContact, RejectsBadOptions) {
 // and the heating below the Newtonian film's; rheology "eyring" without an Eyring stress is
 // an input error.
 TEST(ThermalLineContact, EyringFilmLimitsTractionAndHeating) {
-  auto oil = roelands_oil();
-  oil.eyring_stress = 5e6;
-  const lubricant::ThermalRheology rheology(oil, T0);
+  const lubricant::ThermalRheology rheology(eyring_oil(), T0);
   const auto newtonian = ThermalLineContact(contact(2.5, 1.5), rheology, steel(), small_grid()).solve();
-  auto o = small_grid();
-  o.film.rheology = lubricant::ShearRheology::eyring;
+  const auto o = eyring_film(161);
   const auto eyring = ThermalLineContact(contact(2.5, 1.5), rheology, steel(), o).solve();
   EXPECT_EQ(eyring.rheology, lubricant::ShearRheology::eyring);
   EXPECT_NEAR(eyring.heat.removed() / eyring.heat.generated(), 1.0, 0.02);
