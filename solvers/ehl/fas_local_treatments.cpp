@@ -10,10 +10,14 @@
 
 namespace gearbench::ehl {
 
+double FasMultigrid::Impl::spike_half_width_in_X() const {
+  return o_.spike_half_width * problem_.hertz_half_width() / problem_.length_scale();
+}
+
 FasMultigrid::Impl::NodeRange FasMultigrid::Impl::relax_spike(Level& l) {
   constexpr int steps = 2;
   constexpr std::size_t fewest_nodes = 4;  // either side: the window measured best in nodes (eighth session)
-  const auto w = std::max(fewest_nodes, static_cast<std::size_t>(std::ceil(o_.spike_half_width / l.h)));
+  const auto w = std::max(fewest_nodes, static_cast<std::size_t>(std::ceil(spike_half_width_in_X() / l.h)));
   update_coefficients(l);  // the film is current (relax_spike's precondition)
   const auto s = spike_index(l.P);
   const std::size_t a = s > w ? s - w : 1;

@@ -238,6 +238,11 @@ class FasMultigrid::Impl {
   /// relaxation leaves it so); leaves it current on the returned window only (the step after
   /// it brings the rest up to date: a whole-grid update here cost ~1 of a visit's ~6 sweeps).
   NodeRange relax_spike(Level& l);
+  /// The spike window's half-width, spike_half_width·b, in the grid's unit X = x/ℓ: ℓ = b in
+  /// Hertzian scaling, ℓ = √(2RH_Martin) ≈ 1.39b/M in rigid scaling (M < 3). Taken in ℓ, the
+  /// window was 0.035b at M = 2 and its edge cut the zone past the spike where ε rises from
+  /// 1e-56 to O(1): (2, 25) on 8193 nodes stalled at 0.965 (fourteenth session).
+  [[nodiscard]] double spike_half_width_in_X() const;
 
   /// The outlet's free boundary, a grid-scale feature like the spike: free_boundary_sweeps
   /// extra sweeps over the last free_boundary_window pressurised nodes and a few beyond
