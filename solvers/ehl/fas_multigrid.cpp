@@ -64,7 +64,9 @@ void FasMultigrid::Impl::add_level() {
 
 std::size_t FasMultigrid::Impl::coarsest_nodes() const {
   if (o_.coarsest_nodes > 0) return static_cast<std::size_t>(o_.coarsest_nodes);
-  const double h_target = std::min(problem_.hertzian_scaling() ? 0.25 : 1.0, std::sqrt(film_estimate()));
+  // b/4 in X = x/ℓ: 0.25 in Hertzian scaling, 0.18 at M = 1 in rigid scaling (b ≈ 0.72·M·ℓ).
+  const double quarter_b = 0.25 * problem_.hertz_half_width() / problem_.length_scale();
+  const double h_target = std::min(quarter_b, std::sqrt(film_estimate()));
   std::size_t intervals = 32;
   while ((x_out_ - x_in_) / static_cast<double>(intervals) > h_target && intervals < 1024) intervals *= 2;
   return intervals + 1;

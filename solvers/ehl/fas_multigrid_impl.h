@@ -40,9 +40,12 @@ class FasMultigrid::Impl {
   /// The ratio of successive full-multigrid changes from which the grids count as asymptotic
   /// (2^p = 4 in the limit; 2.5 leaves room for a noisy H_min, fas_stop.cpp).
   static constexpr double asymptotic_ratio = 2.5;
-  /// Newton steps of the coarsest grid per visit within a cycle (each visit starts from the
-  /// last one's solution: two steps meet it to rounding where it is smooth).
-  static constexpr int coarsest_steps_per_visit = 3;
+  /// Newton steps of the coarsest grid per visit within a cycle. Each visit starts from the
+  /// last one's solution and the coarse correction needs only the cycle's accuracy: one step
+  /// gave the factors of three to three digits (fourteenth session: (10, 0), (20, 10), (2, 10),
+  /// (1, 0), (200, 0), (10, 17.5) on 4097 nodes) at 1–36 % fewer WU, the most where the
+  /// coarsest grid is large (257 nodes at M = 1).
+  static constexpr int coarsest_steps_per_visit = 1;
   /// Newton steps per stage of the start on the coarsest grid.
   static constexpr int coarsest_steps_per_stage = 30;
   /// Relative change of P and H0 at which a coarsest-grid Newton solve stops; the stages of
@@ -106,8 +109,13 @@ class FasMultigrid::Impl {
   // --- hierarchy (fas_multigrid.cpp) ---------------------------------------------------
   void add_level();
   /// The coarsest grid: as given, or the fewest nodes, 32·2^k + 1, whose mesh resolves
-  /// both the pressure zone (h ≤ 1/4 of the Hertz half-width in Hertzian scaling; h ≤ the
-  /// rigid-isoviscous length in rigid scaling, whose domain spans 43 of them) and the film: the discretisation error of the film, a
+  /// both the Hertzian zone (h ≤ b/4 in either scaling; in rigid scaling, M < 3, b ≈ 0.72·M·ℓ
+  /// is below the rigid-isoviscous length ℓ, and the domain of 43ℓ needs 257 nodes at M = 1,
+  /// 129 at M = 2) and the film. At high L the load concentrates in the Hertzian zone
+  /// (82 % within −1 … 0.5ℓ at (1, 25)); the earlier h ≤ ℓ put 1.5 nodes in b there: after
+  /// each 65-node correction the 129-node grid's relaxation and spike solve moved ∫P by
+  /// ∓2.4e-2, and the W-cycle's two visits moved H0 by ±0.016 in turn (force balance stalled
+  /// at 2.5e-2 on 4097 nodes; fourteenth session). The film: the discretisation error of the film, a
   /// difference of O(1) terms (H0, X²/2 and the deformation), is O(h²), so h ≤ √H_est keeps
   /// the coarse film positive (issue 19: at M = 1000 a 41-node coarsest grid has a negative
   /// film, H_est ≈ 2.6e-4 in Hertzian units). H_est is Moes' isoviscous film.
