@@ -1,7 +1,8 @@
 // Unit tests of the EHL multigrid's pieces: the second-order wedge stencil, the Jacobian it
 // implies, the grid options (nodes, levels, the sized coarsest grid), and a warm start from a
 // converged solution that must stay put; F-cycles against W-cycles; the spike window on a fine
-// grid at high L; a coarsest grid without a Newton step ends the solve with a status.
+// grid at high L; the coarsest grid and the spike window in b in rigid scaling; a coarsest grid
+// without a Newton step ends the solve with a status.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -140,6 +141,26 @@ TEST(FasMultigrid, SpikeWindowKeepsHighLOnFineGridsConverging) {
   const auto r = solve_to_residual(10.0, 17.5, 4097);
   ASSERT_TRUE(r.converged) << r.message;
   EXPECT_LE(r.convergence_factor, 0.3);
+}
+
+/// A solve from scratch with the default options (stop at the discretisation error) on a
+/// fixed grid: the runs of the convergence map.
+EhlResult solve_from_scratch(double M, double L, int nodes) {
+  EhlOptions o;
+  o.nodes = nodes;
+  return LineContactSolver(LineContactProblem(LineContactData::from_moes(M, L)), o).try_solve();
+}
+
+// Rigid scaling (M < 3) measures X in ℓ ≈ 1.39b/M, not in b (fourteenth session). (1, 25) on
+// 4097 nodes: a coarsest grid of h ≤ ℓ (65 nodes, 1.5 in b) left the force balance at 2.5e-2,
+// H0 alternating by 0.016 between the W-cycle's two coarsest visits; h ≤ b/4 (257 nodes)
+// converges it. (2, 25) on 8193 nodes: the spike window of 0.05ℓ = 0.035b stalled at 0.965 a
+// cycle; 0.05b converges it.
+TEST(FasMultigrid, RigidScalingSizesTheCoarsestGridAndSpikeWindowInB) {
+  const auto one = solve_from_scratch(1.0, 25.0, 4097);
+  EXPECT_TRUE(one.converged) << one.message;
+  const auto two = solve_from_scratch(2.0, 25.0, 8193);
+  EXPECT_TRUE(two.converged) << two.message;
 }
 
 // A contact whose dimensionless scales a double does not hold (a load of 1e-300 N/m: the
