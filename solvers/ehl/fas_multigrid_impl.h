@@ -109,9 +109,10 @@ class FasMultigrid::Impl {
   // --- hierarchy (fas_multigrid.cpp) ---------------------------------------------------
   void add_level();
   /// The coarsest grid: as given, or the fewest nodes, 32·2^k + 1, whose mesh resolves
-  /// both the Hertzian zone (h ≤ b/4 in either scaling; in rigid scaling, M < 3, b ≈ 0.72·M·ℓ
-  /// is below the rigid-isoviscous length ℓ, and the domain of 43ℓ needs 257 nodes at M = 1,
-  /// 129 at M = 2) and the film. At high L the load concentrates in the Hertzian zone
+  /// both the pressure zone (h ≤ max(b, ℓ)/4: b/4 in Hertzian scaling; in rigid scaling, M < 3,
+  /// b ≈ 0.72·M·ℓ, and the domain of 43ℓ needs 257 nodes at M = 1, 129 at M = 2; b/4 alone
+  /// would refine without bound as M → 0, where the contact is rigid and its zone ℓ wide) and
+  /// the film. At high L the load concentrates in the Hertzian zone
   /// (82 % within −1 … 0.5ℓ at (1, 25)); the earlier h ≤ ℓ put 1.5 nodes in b there: after
   /// each 65-node correction the 129-node grid's relaxation and spike solve moved ∫P by
   /// ∓2.4e-2, and the W-cycle's two visits moved H0 by ±0.016 in turn (force balance stalled
@@ -120,8 +121,11 @@ class FasMultigrid::Impl {
   /// the coarse film positive (issue 19: at M = 1000 a 41-node coarsest grid has a negative
   /// film, H_est ≈ 2.6e-4 in Hertzian units). H_est is Moes' isoviscous film.
   [[nodiscard]] std::size_t coarsest_nodes() const;
+  /// The fewest nodes, 32·2^k + 1 (at most 1025), whose spacing over the domain is ≤ h_target.
+  [[nodiscard]] std::size_t nodes_resolving(double h_target) const;
   /// For a given finest grid: the levels down to the coarsest grid that is at least as fine
-  /// as the sized one (coarsest_ is set to it). n − 1 = (n_0 − 1)·2^(levels − 1).
+  /// as the sized one, and at least two levels where the film allows (coarsest_ is set to it).
+  /// n − 1 = (n_0 − 1)·2^(levels − 1).
   int levels_for_finest(std::size_t nodes);
   /// Moes' film from the rigid- and elastic-isoviscous asymptotes (Moes 1992, line contact),
   /// in the problem's film units: the start's H0 and the coarsest grid's film scale.
