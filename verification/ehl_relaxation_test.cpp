@@ -153,9 +153,9 @@ EhlResult solve_from_scratch(double M, double L, int nodes) {
 
 // Rigid scaling (M < 3) measures X in ℓ ≈ 1.39b/M, not in b (fourteenth session). (1, 25) on
 // 4097 nodes: a coarsest grid of h ≤ ℓ (65 nodes, 1.5 in b) left the force balance at 2.5e-2,
-// H0 alternating by 0.016 between the W-cycle's two coarsest visits; h ≤ b/4 (257 nodes)
-// converges it. (2, 25) on 8193 nodes: the spike window of 0.05ℓ = 0.035b stalled at 0.965 a
-// cycle; 0.05b converges it.
+// H0 alternating by 0.016 between the W-cycle's two coarsest visits; h ≤ max(b, ℓ)/4
+// (257 nodes) converges it. (2, 25) on 8193 nodes: the spike window of 0.05ℓ = 0.035b stalled
+// at 0.965 a cycle; 0.05b converges it.
 TEST(FasMultigrid, RigidScalingSizesTheCoarsestGridAndSpikeWindowInB) {
   const auto one = solve_from_scratch(1.0, 25.0, 4097);
   EXPECT_TRUE(one.converged) << one.message;
