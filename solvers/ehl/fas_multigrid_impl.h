@@ -40,12 +40,14 @@ class FasMultigrid::Impl {
   /// The ratio of successive full-multigrid changes from which the grids count as asymptotic
   /// (2^p = 4 in the limit; 2.5 leaves room for a noisy H_min, fas_stop.cpp).
   static constexpr double asymptotic_ratio = 2.5;
-  /// Newton steps of the coarsest grid per visit within a cycle. Each visit starts from the
-  /// last one's solution and the coarse correction needs only the cycle's accuracy: one step
-  /// gave the factors of three to three digits (fourteenth session: (10, 0), (20, 10), (2, 10),
-  /// (1, 0), (200, 0), (10, 17.5) on 4097 nodes) at 1–36 % fewer WU, the most where the
-  /// coarsest grid is large (257 nodes at M = 1).
-  static constexpr int coarsest_steps_per_visit = 1;
+  /// Newton steps of the coarsest grid per visit within a cycle (each visit starts from the
+  /// last one's solution: two steps meet it to rounding where it is smooth). One step gave the
+  /// factors of three to three digits at six points on 4097 nodes for 1–36 % fewer WU, but an
+  /// Eyring film's factors on 81 nodes (a seed 004 contact, M 10.7, L 19.8, of the check
+  /// efficiency.ehl_thermal.isothermal_newtonian_limit) then stalled the full solve at a
+  /// residual of 0.1 in 60 cycles and the film collapsed; three steps: 21 iterations
+  /// (fourteenth session).
+  static constexpr int coarsest_steps_per_visit = 3;
   /// Newton steps per stage of the start on the coarsest grid.
   static constexpr int coarsest_steps_per_stage = 30;
   /// Relative change of P and H0 at which a coarsest-grid Newton solve stops; the stages of
