@@ -55,7 +55,7 @@ int bench_command(const BenchRequest& request) {
     fs::remove(raw);
     throw std::runtime_error("the benchmark executable failed");
   }
-  json record = model::read_json_file(raw.string());
+  json record = reports::parse_benchmark_output(model::read_text_file(raw.string(), "benchmark output"), raw.string());
   fs::remove(raw);
   record["gearbench"] = reports::provenance();
   if (const auto t = commit_time_utc(build::source_dir(), build::git_sha()); !t.empty())

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <regex>
 #include <string>
 #include <vector>
 
+#include "model/json_reader.h"
 #include "perf_history.h"
 
 namespace gearbench::reports {
@@ -21,6 +23,11 @@ bool stopped_unconverged(const nlohmann::json& run) {
   return run.contains("converged") && run["converged"].is_number() && run["converged"].get<double>() == 0.0;
 }
 }  // namespace
+
+nlohmann::json parse_benchmark_output(const std::string& text, const std::string& source) {
+  static const std::regex non_finite(R"((:\s*)-?(nan|NaN|inf|Inf|infinity|Infinity)\b)");
+  return model::parse_json(std::regex_replace(text, non_finite, "$1null"), source);
+}
 
 double real_seconds(const nlohmann::json& run) {
   return run.at("real_time").get<double>() * unit_seconds(run.value("time_unit", "ns"), "benchmark output");

@@ -2,8 +2,14 @@
 // Side-by-side ratios of a Google Benchmark run: each benchmark X[/args] over X_baseline
 // measured in the same run; and the scaling exponent of a family measured over sizes.
 #include <nlohmann/json.hpp>
+#include <string>
 
 namespace gearbench::reports {
+
+/// Google Benchmark's JSON output (`text`, from `source`), its non-finite numbers read as null:
+/// its reporter prints them as bare NaN / inf, for which JSON has no token (the standard
+/// deviation of a counter equal in every repetition can come out NaN from rounding).
+nlohmann::json parse_benchmark_output(const std::string& text, const std::string& source);
 
 /// A run's real time in seconds (Google Benchmark reports it in the run's own time_unit).
 double real_seconds(const nlohmann::json& run);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_ratios.h"
 #include "bench_section.h"
 #include "report.h"
 
@@ -94,6 +95,22 @@ TEST(WorkPrecision, AxesSurviveTheReportJson) {
   EXPECT_TRUE(back.log_x);
   EXPECT_TRUE(back.log_y);
   EXPECT_TRUE(back.points);
+}
+
+// Google Benchmark writes a non-finite aggregate as a bare NaN (the fourteenth session's record
+// stopped on one: the stddev of a counter equal in all repetitions); the record reads it as
+// null, which the report's counter columns skip, and keeps every finite number.
+TEST(BenchmarkOutput, NonFiniteNumbersReadAsNull) {
+  const auto j = parse_benchmark_output(
+      R"({"benchmarks": [{"name": "BM_X_stddev", "real_time": 1.5e+02, "k": NaN, "m": -nan, "q": inf,
+          "label": "NaN inside a string stays"}]})",
+      "test");
+  const auto& b = j["benchmarks"][0];
+  EXPECT_TRUE(b["k"].is_null());
+  EXPECT_TRUE(b["m"].is_null());
+  EXPECT_TRUE(b["q"].is_null());
+  EXPECT_DOUBLE_EQ(b["real_time"].get<double>(), 150.0);
+  EXPECT_EQ(b["label"], "NaN inside a string stays");
 }
 
 }  // namespace
