@@ -9,9 +9,10 @@
 
 namespace gearbench::ehl {
 
-void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance) {
+void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance, double merit_reduction) {
   const auto start = std::chrono::steady_clock::now();
   double merit = coarsest_merit(l);
+  const double merit_target = merit_reduction * merit;
   for (int s = 0; s < steps; ++s) {
     const CoarsestStep step = coarsest_newton_step(coefficients(l), l.P, coarsest_residuals(l),
                                                    film_sensitivity(l), l.g - integral(l));
@@ -43,6 +44,7 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance) {
       break;
     }
     merit = trial;
+    if (merit <= merit_target) break;
     double largest = 0.0, size = 1e-300;
     for (std::size_t i = 1; i + 1 < l.n; ++i) {
       largest = std::max(largest, std::abs(l.P[i] - P0[i]));

@@ -41,13 +41,21 @@ class FasMultigrid::Impl {
   /// (2^p = 4 in the limit; 2.5 leaves room for a noisy H_min, fas_stop.cpp).
   static constexpr double asymptotic_ratio = 2.5;
   /// Newton steps of the coarsest grid per visit within a cycle (each visit starts from the
-  /// last one's solution: two steps meet it to rounding where it is smooth). One step gave the
-  /// factors of three to three digits at six points on 4097 nodes for 1–36 % fewer WU, but an
-  /// Eyring film's factors on 81 nodes (a seed 004 contact, M 10.7, L 19.8, of the check
-  /// efficiency.ehl_thermal.isothermal_newtonian_limit) then stalled the full solve at a
-  /// residual of 0.1 in 60 cycles and the film collapsed; three steps: 21 iterations
-  /// (fourteenth session).
+  /// last one's solution), and the visit's stop: its merit (squared residual) down by
+  /// `coarsest_visit_reduction`, the residual by 100 (an inexact coarse solve: a correction
+  /// need not be solved far below the cycle's own factor), or no step moving P and H0 beyond
+  /// coarsest_tolerance. Measured (fourteenth session):
+  /// - always one step: the six reference factors on 4097 nodes to three digits for 1–36 %
+  ///   fewer WU, but a two-level 81-node solve of the thermal solver's Eyring factors (a seed
+  ///   004 contact, M 10.7, L 19.8) stalled at a residual of 0.1 for 60 cycles;
+  /// - the merit down by 1e-2 (residual by 10): that solve converges, but the Newtonian 1 MN/m
+  ///   thermal roller's last solve no longer met its 1e-8 residual (60 iterations, not converged);
+  /// - by 1e-4: both converge (22 and 38 iterations, as with three steps to 1e-8); the six
+  ///   factors unchanged (0.045, 0.061, 0.210, 0.040, 0.045, 0.170); the maps 71/71 on the
+  ///   default grid and 4097, 8193, 16385 nodes; the default map's median 881 → 597 WU (M ≥ 5:
+  ///   364 → 292; M ≤ 2: 3018 → 2019; (1, 17.5) 38522 → 22038).
   static constexpr int coarsest_steps_per_visit = 3;
+  static constexpr double coarsest_visit_reduction = 1e-4;
   /// Newton steps per stage of the start on the coarsest grid.
   static constexpr int coarsest_steps_per_stage = 30;
   /// Relative change of P and H0 at which a coarsest-grid Newton solve stops; the stages of
@@ -267,8 +275,9 @@ class FasMultigrid::Impl {
 
   // --- coarsest grid (fas_coarsest.cpp) ---------------------------------------
   /// Newton steps in (P, H0) on the coarsest grid (coarsest_solve.h) until the step no
-  /// longer moves H0 or P beyond rounding, at most `steps`.
-  void solve_coarsest(Level& l, int steps, double tolerance);
+  /// longer moves H0 or P beyond `tolerance` (relative) or the merit has fallen by
+  /// `merit_reduction` (0: no such stop), at most `steps`.
+  void solve_coarsest(Level& l, int steps, double tolerance, double merit_reduction = 0.0);
 
   /// Σ of the squared complementarity residuals (r_i where P_i > 0, the negative part of r_i
   /// where P_i = 0) and the squared force balance over h: the merit of the coarsest grid's
