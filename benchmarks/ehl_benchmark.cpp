@@ -72,7 +72,7 @@ void solve_to_error(benchmark::State& state, double M, double L) {
   EhlResult r;
   for (auto _ : state) {
     r = LineContactSolver(problem, o).try_solve();
-    benchmark::DoNotOptimize(r.h_min);
+    benchmark::DoNotOptimize(r);
   }
   state.counters["nodes"] = static_cast<double>(r.X.size());
   state.counters["work_units"] = r.work_units;
@@ -99,7 +99,7 @@ void BM_EhlSteadySolve_baseline(benchmark::State& state) {
   gearbench::reference::EhlNewtonGridStudy r;
   for (auto _ : state) {
     r = gearbench::reference::ehl_newton_grid_study(10.0, 0.0, (nodes - 1) / 4 + 1);
-    benchmark::DoNotOptimize(r.solves[2].H_min);
+    benchmark::DoNotOptimize(r);
   }
   state.counters["nodes"] = static_cast<double>(r.solves[2].nodes);
   state.counters["converged"] = r.converged ? 1.0 : 0.0;
@@ -119,7 +119,7 @@ void BM_EhlTransientSeed004(benchmark::State& state) {
   TransientMeshResult r;
   for (auto _ : state) {
     r = TransientMeshEhl(g, *c.operating, LineContactData::from_gear_media(*c.materials, *c.lubricant), o).run();
-    benchmark::DoNotOptimize(r.h_min);
+    benchmark::DoNotOptimize(r);
   }
   state.counters["steps"] = static_cast<double>(r.steps.size());
   state.counters["ms_per_step"] = 1e3 * r.seconds / static_cast<double>(r.steps.size());

@@ -30,7 +30,7 @@ void BM_TehlPoint(benchmark::State& state) {
   ehl::ThermalEhlResult r;
   for (auto _ : state) {
     r = ehl::ThermalLineContact(sliding_contact(), rheology, steel(), {}).solve();
-    benchmark::DoNotOptimize(r.h_min);
+    benchmark::DoNotOptimize(r);
   }
   state.counters["thermal_iterations"] = r.iterations;
   state.counters["work_units"] = r.work_units;
@@ -47,7 +47,7 @@ void BM_TehlPointEyring(benchmark::State& state) {
   ehl::ThermalEhlResult r;
   for (auto _ : state) {
     r = ehl::ThermalLineContact(sliding_contact(), rheology, steel(), o).solve();
-    benchmark::DoNotOptimize(r.h_min);
+    benchmark::DoNotOptimize(r);
   }
   state.counters["thermal_iterations"] = r.iterations;
   state.counters["work_units"] = r.work_units;
@@ -61,7 +61,7 @@ void BM_TehlPoint_baseline(benchmark::State& state) {
   ehl::EhlResult r;
   for (auto _ : state) {
     r = ehl::LineContactSolver(problem, ehl::ThermalEhlOptions{}.grid).solve();
-    benchmark::DoNotOptimize(r.h_min);
+    benchmark::DoNotOptimize(r);
   }
   state.counters["work_units"] = r.work_units;
 }
