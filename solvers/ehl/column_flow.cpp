@@ -33,7 +33,7 @@ double eyring_wall_stress(const std::vector<double>& zeta, const std::vector<dou
   // mean falls below (above) it; γ̇_j(τ) = mean_rate at τ_j = τ0·asinh(η_j·rate/τ0) − p_x·h·ζ_j.
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (std::size_t j = 0; j < nz; ++j) {
-    const double tau = eyring_stress * std::asinh(viscosity[j] * mean_rate / eyring_stress) - dpdx * h * zeta[j];
+    const double tau = lubricant::eyring_stress(mean_rate, viscosity[j], eyring_stress) - dpdx * h * zeta[j];
     lo = std::min(lo, tau);
     hi = std::max(hi, tau);
   }

@@ -81,14 +81,13 @@ class FilmTemperature {
   /// (.cpp: why).
   double solve(const std::vector<double>& p, const std::vector<double>& h, double tolerance, int max_sweeps);
 
-  /// Takes the temperatures (film, solids) and flux profiles of the same contact on the grid
+  /// Takes the temperatures (film, solids) and Eyring wall stresses of the same contact on the grid
   /// half as fine (nodes (n − 1)/2 + 1, same film and solid nodes, same depth): coinciding
   /// nodes copied, the nodes between them linearly interpolated. The start of a nested solve.
   void interpolate_from(const FilmTemperature& coarse);
 
-  /// The flow at column i; with `dln_eta_dT`, also ∂ln η/∂T per film node [1/K].
-  [[nodiscard]] ColumnFlow column_flow(std::size_t i, double p, double dpdx, double h,
-                                       std::vector<double>* dln_eta_dT = nullptr) const;
+  /// The flow at column i at pressure p, gradient ∂p/∂x and film h, at the current temperatures.
+  [[nodiscard]] ColumnFlow column_flow(std::size_t i, double p, double dpdx, double h) const;
   /// The flow at column i for the pressure and film fields (∂p/∂x by central differences).
   [[nodiscard]] ColumnFlow column_flow(std::size_t i, const std::vector<double>& p, const std::vector<double>& h) const {
     return column_flow(i, p[i], dpdx_at(p, i, dx_), h[i]);
@@ -122,7 +121,7 @@ class FilmTemperature {
   std::array<std::vector<std::vector<double>>, 2> Ts_; ///< solids [body][i][k]
   std::vector<ColumnFlow> flows_;                      ///< each column's flow of this solve()
   std::vector<std::vector<double>> Q_;                 ///< Q(x_i, ζ_j) of flows_ [kg/(m·s)]
-  std::vector<double> wall_stress_;  ///< each column's Eyring root τ_a of the last sweep (NaN: none yet), a Newton start
+  std::vector<double> wall_stress_;  ///< each column's Eyring root τ_a of the last solve() (NaN: none yet), a Newton start
 };
 
 }  // namespace gearbench::ehl

@@ -35,7 +35,8 @@ enum class ShearRheology { newtonian, eyring };
 /// & Wen, J. Tribol. 112 (1990) 631): γ̇ = (τ0/η)·sinh(τ/τ0), the inverse of
 /// τ = τ0·asinh(η·γ̇/τ0). η is the low-shear viscosity η(p, T), τ0 the Eyring stress [Pa].
 double eyring_shear_rate(double tau, double eta, double eyring_stress);
-/// The Ree–Eyring shear stress at the shear rate γ̇, τ = τ0·asinh(η·γ̇/τ0) (the same law).
+/// The Ree–Eyring shear stress at the shear rate γ̇ (of either sign), τ = τ0·asinh(η·γ̇/τ0)
+/// (the same law).
 double eyring_stress(double shear_rate, double eta, double eyring_stress);
 /// The Ree–Eyring equivalent viscosity η* = τ/γ̇ = η·(τ/τ0)/sinh(τ/τ0) (η at τ = 0): the
 /// viscosity that makes a Newtonian film law carry the Eyring stress (Yang & Wen's
