@@ -19,6 +19,11 @@ using model::Range;
 
 constexpr int max_nodes = (1 << 20) + 1;
 
+/// The names of the multigrid cycles, for every key that chooses one.
+std::vector<std::pair<std::string, CycleType>> cycle_choices() {
+  return {{"V", CycleType::V}, {"W", CycleType::W}, {"F", CycleType::F}};
+}
+
 /// The relaxation settings of the multigrid: ranges the C++ API is held to; no case sets them.
 model::OptionTable<EhlOptions> make_tuning_table() {
   model::OptionTable<EhlOptions> t;
@@ -65,8 +70,7 @@ model::OptionTable<EhlOptions> make_grid_table() {
             .unset = 0.0});
   t.number("x_out", &EhlOptions::x_out, Range{0.0, 1e3, true, false},
            {.description = "outlet end of the domain (given with x_in)", .unset = 0.0});
-  t.choice("cycle", &EhlOptions::cycle,
-           std::vector<std::pair<std::string, CycleType>>{{"V", CycleType::V}, {"W", CycleType::W}, {"F", CycleType::F}},
+  t.choice("cycle", &EhlOptions::cycle, cycle_choices(),
            {.description = "multigrid cycle: one (V) or two (W) coarse-grid visits per cycle, or an F-cycle"});
   t.integer("max_cycles", &EhlOptions::max_cycles, 1, 100000,
             {.description = "cycles on the finest grid before the solve is reported unconverged"});
@@ -255,6 +259,8 @@ model::OptionTable<ThermalEhlOptions> make_thermal_tuning_table() {
             {.description = "temperature sweeps between pressure solves"});
   t.integer("cycles_per_iteration", &ThermalEhlOptions::cycles_per_iteration, 1, 1000,
             {.description = "multigrid cycles per pressure solve"});
+  t.choice("pressure_cycle", &ThermalEhlOptions::pressure_cycle, cycle_choices(),
+           {.description = "multigrid cycle of the warm-started pressure solves inside the coupling"});
   t.number("film_tolerance", &ThermalEhlOptions::film_tolerance, Range{0.0, 0.1, true, true},
            {.description = "relative change of h_min between iterations"});
   t.number("factor_relaxation", &ThermalEhlOptions::factor_relaxation, Range{0.0, 1.0, true, false},
