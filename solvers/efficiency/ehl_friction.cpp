@@ -77,7 +77,8 @@ ehl::ThermalEhlOptions EhlFriction::default_thermal_options() {
   // The solver's defaults on 81 nodes. Measured on seed 004's path
   // (cases/efficiency_seed004_ehl_thermal.json, fourteenth session): mean μ 0.05795 on 81
   // nodes, 0.05753 on 161 and 0.05737 on 641 (the mean efficiency 99.099, 99.105, 99.107 %),
-  // at 2.8 s, 11 s and 90 s. Until the coupling stopped at its discretisation error and the
+  // at 2.8 s, 11 s and 90 s (641 nodes: 40.5 s after the fifteenth session's V-cycles and single
+  // sweeps, μ 0.057372). Until the coupling stopped at its discretisation error and the
   // temperature sweeps held each column's flow, this law needed Anderson's β 0.3, h_min
   // settled to 1e-3 only and 300 iterations: β 0.15 left a contact of the dynamics test
   // (M 11.6, L 19) with a non-finite temperature on 81 nodes. It does not now.
