@@ -59,19 +59,10 @@ void FasMultigrid::Impl::update_coefficients_window(Level& l, std::size_t lo, st
   }
 }
 
-double FasMultigrid::Impl::density_slope(double P) const {
-  const double d = 1e-4 * std::max(1.0, P);
-  const double lo = std::max(P - d, 0.0), hi = P + d;
-  return (problem_.density(hi) - problem_.density(lo)) / (hi - lo);
-}
+double FasMultigrid::Impl::density_slope(double P) const { return problem_.density_slope(P); }
 
 double FasMultigrid::Impl::eps_log_slope(double P) const {
-  const double d = 1e-4 * std::max(1.0, P);
-  const double lo = std::max(P - d, 0.0), hi = P + d;
-  const auto log_ratio = [&](double p) {
-    return std::log(problem_.density(p)) - viscosity_exponent_ * problem_.log_viscosity(p);
-  };
-  return (log_ratio(hi) - log_ratio(lo)) / (hi - lo);
+  return problem_.density_slope(P) / problem_.density(P) - viscosity_exponent_ * problem_.log_viscosity_slope(P);
 }
 
 FilmSensitivity FasMultigrid::Impl::film_sensitivity(const Level& l) {

@@ -91,7 +91,7 @@ void FasMultigrid::Impl::solve_jacobi_lines(const Level& l, const ReynoldsCoeffi
     A.setFromTriplets(t.begin(), t.end());
     Eigen::VectorXd rhs(static_cast<int>(m));
     for (std::size_t k = a; k <= b; ++k) rhs(static_cast<int>(k - a)) = residual[k];
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+    Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu;
     lu.compute(A);
     if (lu.info() == Eigen::Success) {
       const Eigen::VectorXd d = lu.solve(rhs);

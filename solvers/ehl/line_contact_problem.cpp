@@ -120,4 +120,15 @@ double LineContactProblem::density(double P) const {
   return lubricant::dowson_higginson_density_ratio(std::max(P, 0.0) * p_r_);
 }
 
+double LineContactProblem::log_viscosity_slope(double P) const {
+  if (P < 0.0) return 0.0;
+  if (data_.viscosity_model == ViscosityModel::barus) return data_.pressure_viscosity * p_r_;
+  return lubricant::roelands_log_ratio_slope(data_.viscosity, roelands_z_, P * p_r_) * p_r_;
+}
+
+double LineContactProblem::density_slope(double P) const {
+  if (P < 0.0 || data_.density_model == DensityModel::incompressible) return 0.0;
+  return lubricant::dowson_higginson_density_slope(P * p_r_) * p_r_;
+}
+
 }  // namespace gearbench::ehl

@@ -79,6 +79,10 @@ class LineContactProblem {
   /// to 0 instead of turning its derivative into NaN.
   [[nodiscard]] double log_viscosity(double P) const;
   [[nodiscard]] double density(double P) const;
+  /// d ln η̄/dP and dρ̄/dP, the laws' own derivatives (0 below P = 0, where both laws are held
+  /// at their P = 0 values; the right-hand derivative at P = 0).
+  [[nodiscard]] double log_viscosity_slope(double P) const;
+  [[nodiscard]] double density_slope(double P) const;
 
  private:
   LineContactData data_;

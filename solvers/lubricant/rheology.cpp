@@ -12,6 +12,10 @@ double roelands_log_ratio(double eta0, double z, double p) {
   return (std::log(eta0) + roelands_ln_eta_inf) * (-1.0 + std::pow(1.0 + p / roelands_p0, z));
 }
 
+double roelands_log_ratio_slope(double eta0, double z, double p) {
+  return (std::log(eta0) + roelands_ln_eta_inf) * z * std::pow(1.0 + p / roelands_p0, z) / (roelands_p0 + p);
+}
+
 double roelands_viscosity(double eta0, double z, double p) { return eta0 * std::exp(roelands_log_ratio(eta0, z, p)); }
 
 double roelands_z_from_alpha(double eta0, double alpha) {
@@ -19,6 +23,8 @@ double roelands_z_from_alpha(double eta0, double alpha) {
 }
 
 double dowson_higginson_density_ratio(double p) { return (5.9e8 + 1.34 * p) / (5.9e8 + p); }
+
+double dowson_higginson_density_slope(double p) { return 0.34 * 5.9e8 / ((5.9e8 + p) * (5.9e8 + p)); }
 
 double eyring_shear_rate(double tau, double eta, double eyring_stress) {
   return eyring_stress / eta * std::sinh(tau / eyring_stress);

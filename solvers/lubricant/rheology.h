@@ -19,6 +19,8 @@ double barus_log_ratio(double alpha, double p);
 double roelands_viscosity(double eta0, double z, double p);
 /// ln(η/η0) of Roelands' law: finite where η itself overflows.
 double roelands_log_ratio(double eta0, double z, double p);
+/// d ln(η/η0)/dp of Roelands' law: (ln η0 + 9.67)·z·(1 + p/p0)^(z−1)/p0 [1/Pa].
+double roelands_log_ratio_slope(double eta0, double z, double p);
 
 /// The Roelands index that matches the Barus pressure–viscosity coefficient at p = 0:
 ///   z = α·p0/(ln η0 + 9.67)  (d ln η/dp at p = 0 equals α).
@@ -26,6 +28,8 @@ double roelands_z_from_alpha(double eta0, double alpha);
 
 /// Dowson & Higginson (1966) compressibility: ρ/ρ0 = (5.9e8 + 1.34·p)/(5.9e8 + p), p in Pa.
 double dowson_higginson_density_ratio(double p);
+/// d(ρ/ρ0)/dp of Dowson & Higginson: 0.34·5.9e8/(5.9e8 + p)² [1/Pa].
+double dowson_higginson_density_slope(double p);
 
 /// The shear response of the film: Newtonian (τ = η·γ̇) or Ree–Eyring.
 enum class ShearRheology { newtonian, eyring };
