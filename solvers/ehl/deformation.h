@@ -35,7 +35,8 @@ class Deformation {
   std::size_t padded_;
   std::vector<double> kernel_;
   std::vector<std::complex<double>> kernel_hat_;
-  // FFTW buffers and plans (mutable: execution writes the buffers, not the plan).
+  // FFTW buffers (mutable: execution writes them) and the process's plans of this size
+  // (deformation.cpp, plans_for: shared, never destroyed).
   double* real_buffer_ = nullptr;
   fftw_complex* complex_buffer_ = nullptr;
   fftw_plan forward_ = nullptr;

@@ -83,10 +83,15 @@ void FasMultigrid::Impl::solve_jacobi_lines(const Level& l, const ReynoldsCoeffi
     while (b + 2 < l.n && is_jacobi[b + 1]) ++b;
     const std::size_t a = i, m = b - a + 1;
     std::vector<Eigen::Triplet<double>> t;
-    for (std::size_t k = a; k <= b; ++k)
-      for (std::size_t q = (k >= a + band ? k - band : a); q <= std::min(b, k + band); ++q)
+    std::vector<double> row;  // J(k, q) for q = first − 1 … last + 1, each evaluated once
+    for (std::size_t k = a; k <= b; ++k) {
+      const std::size_t first = k >= a + band ? k - band : a, last = std::min(b, k + band);
+      row.resize(last - first + 3);
+      for (std::size_t q = first - 1; q <= last + 1; ++q) row[q + 1 - first] = J(k, q);
+      for (std::size_t q = first; q <= last; ++q)
         t.emplace_back(static_cast<int>(k - a), static_cast<int>(q - a),
-                       J(k, q) - (0.5 * J(k, q - 1) + 0.5 * J(k, q + 1)));
+                       row[q + 1 - first] - 0.5 * (row[q - first] + row[q + 2 - first]));
+    }
     Eigen::SparseMatrix<double> A(static_cast<int>(m), static_cast<int>(m));
     A.setFromTriplets(t.begin(), t.end());
     Eigen::VectorXd rhs(static_cast<int>(m));
