@@ -2,9 +2,10 @@
 // implies, the grid options (nodes, levels, the sized coarsest grid), and a warm start from a
 // converged solution that must stay put; F-cycles against W-cycles; the spike window on a fine
 // grid at high L; the coarsest grid and the spike window in b in rigid scaling; a coarsest grid
-// without a Newton step ends the solve with a status.
+// without a Newton step ends the solve with a status; deformations sharing FFTW's plans.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -23,6 +24,36 @@ TEST(ReynoldsStencil, SecondOrderUpwindWedgeFirstOrderAtTheFirstNode) {
   // The weights differentiate a quadratic exactly: (1.5·4 − 2·1 + 0.5·0)/1 = 4 = d(x²)/dx at x = 2.
   const auto w = wedge_weights(5);
   EXPECT_DOUBLE_EQ(w[0] * 25.0 + w[1] * 16.0 + w[2] * 9.0, 10.0);
+}
+
+// Deformations of one size share the process's FFTW plans (deformation.cpp, plans_for) and
+// run them on their own buffers: interleaved, each must still give its own direct sum. Fails
+// if a plan ran on the arrays it was made with, or if one object's kernel leaked into another.
+TEST(Deformation, SharedPlansKeepEachOperatorsOwnKernelAndBuffers) {
+  const std::size_t n = 257;
+  const Deformation fine(n, 0.01), coarse(n, 0.04), other_size(129, 0.02);
+  std::vector<double> P(n), Q(n), R(129);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = -1.0 + 2.0 * static_cast<double>(i) / static_cast<double>(n - 1);
+    P[i] = std::max(0.0, 1.0 - x * x);
+    Q[i] = std::exp(-8.0 * x * x);
+  }
+  for (std::size_t i = 0; i < R.size(); ++i) R[i] = static_cast<double>(i % 7);
+  std::vector<double> a, b, c, direct;
+  for (int round = 0; round < 2; ++round) {
+    fine.apply(P, a);
+    coarse.apply(Q, b);
+    other_size.apply(R, c);
+    const auto expect_direct = [&](const Deformation& d, const std::vector<double>& in, const std::vector<double>& out) {
+      d.apply_direct(in, direct);
+      double scale = 0.0;
+      for (double w : direct) scale = std::max(scale, std::abs(w));
+      for (std::size_t i = 0; i < direct.size(); ++i) EXPECT_NEAR(out[i], direct[i], 1e-12 * scale) << "node " << i;
+    };
+    expect_direct(fine, P, a);
+    expect_direct(coarse, Q, b);
+    expect_direct(other_size, R, c);
+  }
 }
 
 /// A 9-node grid with smooth coefficients.
