@@ -21,14 +21,14 @@ double integrate_graded(const std::vector<double>& y, const std::vector<double>&
 }
 
 /// Solves the tridiagonal system (sub, diag, sup)·x = rhs with GSL (gsl_linalg_solve_tridiag).
-std::vector<double> solve_tridiagonal(std::vector<double> sub, std::vector<double> diag, std::vector<double> sup,
-                                      std::vector<double> rhs) {
+std::vector<double> solve_tridiagonal(const std::vector<double>& sub, const std::vector<double>& diag,
+                                      const std::vector<double>& sup, const std::vector<double>& rhs) {
   model::gsl_use_status_codes();
   std::vector<double> x(diag.size());
-  gsl_vector_view d = gsl_vector_view_array(diag.data(), diag.size());
-  gsl_vector_view e = gsl_vector_view_array(sup.data(), sup.size());
-  gsl_vector_view f = gsl_vector_view_array(sub.data(), sub.size());
-  gsl_vector_view b = gsl_vector_view_array(rhs.data(), rhs.size());
+  gsl_vector_const_view d = gsl_vector_const_view_array(diag.data(), diag.size());
+  gsl_vector_const_view e = gsl_vector_const_view_array(sup.data(), sup.size());
+  gsl_vector_const_view f = gsl_vector_const_view_array(sub.data(), sub.size());
+  gsl_vector_const_view b = gsl_vector_const_view_array(rhs.data(), rhs.size());
   gsl_vector_view out = gsl_vector_view_array(x.data(), x.size());
   model::gsl_check(gsl_linalg_solve_tridiag(&d.vector, &e.vector, &f.vector, &b.vector, &out.vector),
                    "tridiagonal solve of a film-temperature column");
