@@ -36,7 +36,7 @@ class Deformation {
   std::vector<double> kernel_;
   std::vector<std::complex<double>> kernel_hat_;
   // FFTW buffers (mutable: execution writes them) and the process's plans of this size
-  // (deformation.cpp, plans_for: shared, never destroyed).
+  // (deformation.cpp, plans_for: shared, destroyed at exit).
   double* real_buffer_ = nullptr;
   fftw_complex* complex_buffer_ = nullptr;
   fftw_plan forward_ = nullptr;

@@ -172,13 +172,6 @@ class FasMultigrid::Impl {
   void update_coefficients_window(Level& l, std::size_t lo, std::size_t hi);
   void update_node_coefficients(Level& l, std::size_t i) const;
 
-  /// dρ̄/dP (the density law's derivative).
-  [[nodiscard]] double density_slope(double P) const;
-
-  /// d ln(ρ̄/η̄^s)/dP from the laws' derivatives (a central difference before the fifteenth
-  /// session: two more Roelands powers per node, 8 % of an isothermal solve's instructions).
-  [[nodiscard]] double eps_log_slope(double P) const;
-
   /// ∂ε_{i+½}/∂H_i and ∂ε_{i+½}/∂H_{i+1} (ε ∝ H³).
   [[nodiscard]] static FilmSensitivity film_sensitivity(const Level& l);
 

@@ -180,11 +180,12 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
   // Measured (641 nodes, nested): pressure cycles 139 → 97 (sliding), 238 → 143 (sliding
   // Eyring), 351 → 212 (Eyring roller; 23 → 28 iterations); h_min moves ≤ 5e-6. Forcing 1e-6
   // saves half as many cycles.
+  EhlOptions warm = grid;  // every pressure solve after the isothermal start is warm-started
+  warm.cycle = options_.pressure_cycle;
   const auto inexact = [&](double factor_residual) {
     constexpr double pressure_forcing = 1e-5;
-    EhlOptions inner = grid;
+    EhlOptions inner = warm;
     inner.max_cycles = std::min(inner.max_cycles, options_.cycles_per_iteration);
-    inner.cycle = options_.pressure_cycle;
     inner.tolerance = std::max(grid.tolerance, std::min(1e-5, pressure_forcing * factor_residual));
     return inner;
   };
@@ -271,9 +272,7 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
     // solve's tolerance (≤ 1e-5 of the factor residual) moves far less than the estimate itself.
     // Measured (fifteenth session, instructions by callgrind, the sliding contact on 641 nodes):
     // the Eyring film 3.52e9 → 3.33e9, the Newtonian one 2.87e9 → 2.71e9; ΔT_max moves 1e-3 K.
-    EhlOptions inner = grid;
-    if (!temperature_settled) inner = inexact(r.factor_residual_history.back());
-    inner.cycle = options_.pressure_cycle;
+    const EhlOptions inner = temperature_settled ? warm : inexact(r.factor_residual_history.back());
     const bool full_solve = inner.tolerance <= grid.tolerance || end != nullptr;
     EhlResult next = FasMultigrid(problem, inner, state).solve(WarmStart{current.P, current.H0});
     r.pressure_cycles += next.cycles;

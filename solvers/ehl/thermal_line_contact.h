@@ -67,8 +67,8 @@ struct ThermalEhlOptions {
   /// grid.cycle): V. A warm start is already near the solution, so depth costs little: on 641
   /// nodes the last solve to grid.tolerance takes 5–6 V(2,1) cycles (9.4 WU each) where it
   /// took 5 W(2,1) cycles (34 WU each). Measured (fifteenth session, instructions counted by
-  /// callgrind, the sliding contact's Eyring film, with `nested_grids_settle_inexactly`):
-  /// 2.64e9 against 3.33e9 with W; the figures move ≤ 5e-6 relative.
+  /// callgrind, the sliding contact's Eyring film, the nested grids settling on their inexact
+  /// solve): 2.64e9 against 3.33e9 with W; the figures move ≤ 5e-6 relative.
   CycleType pressure_cycle = CycleType::V;
   /// Largest temperature change between iterations, relative to the film's largest rise
   /// (at least 10 K, so 1e-2 K for nearly isothermal contacts): 1e-3 settles h_min to ~1e-5
