@@ -221,8 +221,10 @@ class FasMultigrid::Impl {
   /// its complementarity slack, not an error, and solved with the line its (clipped) change
   /// skews its pressurised neighbours' (twelfth session: (200, 0) on 1025 nodes stalled at a
   /// force balance of 2e-6 with the last pressurised node's residual at 1e-2).
-  void solve_jacobi_lines(const Level& l, const ReynoldsCoefficients& c, const std::vector<char>& is_jacobi,
-                          const std::vector<double>& residual, std::vector<double>& change) const;
+  /// The work vectors hold the sweep's nodes first, first + 1, … (entry i − first).
+  void solve_jacobi_lines(const Level& l, const ReynoldsCoefficients& c, std::size_t first,
+                          const std::vector<char>& is_jacobi, const std::vector<double>& residual,
+                          std::vector<double>& change) const;
 
   /// Node i stays at zero in a sweep: held by the coarse grid's truncation, or cavitated
   /// with a residual r_i of the sign that keeps it there (r_i/∂L_i/∂P_i ≤ 0, the rule of the

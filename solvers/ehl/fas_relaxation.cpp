@@ -7,7 +7,9 @@
 #include <chrono>
 #include <cmath>
 
-#include <Eigen/Sparse>
+// LAPACK's banded LU with partial pivoting (the Fortran symbol; Debian's liblapack).
+extern "C" void dgbsv_(const int* n, const int* kl, const int* ku, const int* nrhs, double* ab, const int* ldab,
+                       int* ipiv, double* b, const int* ldb, int* info);
 
 namespace gearbench::ehl {
 
@@ -29,31 +31,37 @@ void FasMultigrid::Impl::relax(Level& l, std::size_t first, std::size_t end, con
   else
     update_coefficients(l);
   const auto c = coefficients(l);
-  std::vector<double> jacobi_change(l.n, 0.0), jacobi_residual(l.n, 0.0);
-  std::vector<char> is_jacobi(l.n, 0);
+  // The sweep's work vectors span its own nodes (entry i − first): a sweep over a window (the
+  // free boundary's) costs the window, not the grid.
+  const std::size_t m = end - first;
+  std::vector<double> jacobi_change(m, 0.0), jacobi_residual(m, 0.0);
+  std::vector<char> is_jacobi(m, 0);
   for (std::size_t i = first; i < end; ++i) {
     if (poiseuille_dominates(l, c, i)) continue;
     const double r = l.f[i] - operator_at(l, i);
     const double derivative = c.jacobian(i, i) - 0.5 * (c.jacobian(i, i - 1) + c.jacobian(i, i + 1));
     if (stays_at_zero(l, i, r, derivative)) continue;
-    jacobi_change[i] = limit_change(l, i, o_.omega_jacobi * r / derivative);
-    jacobi_residual[i] = r;
-    is_jacobi[i] = 1;
+    jacobi_change[i - first] = limit_change(l, i, o_.omega_jacobi * r / derivative);
+    jacobi_residual[i - first] = r;
+    is_jacobi[i - first] = 1;
   }
-  solve_jacobi_lines(l, c, is_jacobi, jacobi_residual, jacobi_change);
-  for (std::size_t i = 1; i + 1 < l.n; ++i) {
-    if (jacobi_change[i] == 0.0) continue;
-    l.P[i] += jacobi_change[i];
-    if (i > 1 && !l.cavitated_on_finer[i - 1]) l.P[i - 1] -= 0.5 * jacobi_change[i];
-    if (i + 2 < l.n && !l.cavitated_on_finer[i + 1]) l.P[i + 1] -= 0.5 * jacobi_change[i];
+  solve_jacobi_lines(l, c, first, is_jacobi, jacobi_residual, jacobi_change);
+  for (std::size_t i = first; i < end; ++i) {
+    const double change = jacobi_change[i - first];
+    if (change == 0.0) continue;
+    l.P[i] += change;
+    if (i > 1 && !l.cavitated_on_finer[i - 1]) l.P[i - 1] -= 0.5 * change;
+    if (i + 2 < l.n && !l.cavitated_on_finer[i + 1]) l.P[i + 1] -= 0.5 * change;
   }
-  for (auto& p : l.P) p = std::max(p, 0.0);
+  // P ≥ 0 where the changes reached (first − 1 … end); a whole-grid sweep clips every node, so
+  // that an interpolated start's negative pressures are removed.
+  for (std::size_t i = first == 1 && end == l.n - 1 ? 0 : first - 1; i <= end; ++i) l.P[i] = std::max(l.P[i], 0.0);
   l.P.front() = l.P.back() = 0.0;
   refresh_film();
   // Gauss–Seidel nodes after the Jacobi lines, so that they see (and answer) the lines'
   // distributed changes and film.
   for (std::size_t i = first; i < end; ++i) {
-    if (is_jacobi[i] || l.cavitated_on_finer[i]) continue;
+    if (is_jacobi[i - first] || l.cavitated_on_finer[i]) continue;
     const double r = l.f[i] - operator_at(l, i);
     const double old = l.P[i];
     l.P[i] = std::max(0.0, old + limit_change(l, i, o_.omega_gauss_seidel * r / gauss_seidel_derivative(c, i)));
@@ -72,38 +80,41 @@ bool FasMultigrid::Impl::poiseuille_dominates(const Level& l, const ReynoldsCoef
   return !(poiseuille < o_.relaxation_switch * std::abs(wedge));
 }
 
-void FasMultigrid::Impl::solve_jacobi_lines(const Level& l, const ReynoldsCoefficients& c, const std::vector<char>& is_jacobi,
-                        const std::vector<double>& residual, std::vector<double>& change) const {
+void FasMultigrid::Impl::solve_jacobi_lines(const Level& l, const ReynoldsCoefficients& c, std::size_t first,
+                                            const std::vector<char>& is_jacobi, const std::vector<double>& residual,
+                                            std::vector<double>& change) const {
   const auto band = static_cast<std::size_t>(o_.line_band);
   const auto J = [&](std::size_t k, std::size_t j) { return (j == 0 || j + 1 >= l.n) ? 0.0 : c.jacobian(k, j); };
-  std::size_t i = 1;
-  while (i + 1 < l.n) {
-    if (!is_jacobi[i]) { ++i; continue; }
+  const std::size_t end = first + is_jacobi.size();
+  std::vector<double> band_storage, d, row;  // row: J(k, q) for q = lo − 1 … hi + 1, each evaluated once
+  std::vector<int> pivots;
+  std::size_t i = first;
+  while (i < end) {
+    if (!is_jacobi[i - first]) { ++i; continue; }
     std::size_t b = i;
-    while (b + 2 < l.n && is_jacobi[b + 1]) ++b;
+    while (b + 1 < end && is_jacobi[b + 1 - first]) ++b;
     const std::size_t a = i, m = b - a + 1;
-    std::vector<Eigen::Triplet<double>> t;
-    std::vector<double> row;  // J(k, q) for q = first − 1 … last + 1, each evaluated once
+    // LAPACK band storage for dgbsv: kl = ku = band, ab(kl + ku + 1 + r − c, c) = A(r, c) with
+    // kl extra rows for the fill-in of partial pivoting, column-major, leading dimension 3·band + 1.
+    const int n = static_cast<int>(m), kl = static_cast<int>(band), ku = kl, ldab = 2 * kl + ku + 1, nrhs = 1;
+    band_storage.assign(static_cast<std::size_t>(ldab) * m, 0.0);
     for (std::size_t k = a; k <= b; ++k) {
-      const std::size_t first = k >= a + band ? k - band : a, last = std::min(b, k + band);
-      row.resize(last - first + 3);
-      for (std::size_t q = first - 1; q <= last + 1; ++q) row[q + 1 - first] = J(k, q);
-      for (std::size_t q = first; q <= last; ++q)
-        t.emplace_back(static_cast<int>(k - a), static_cast<int>(q - a),
-                       row[q + 1 - first] - 0.5 * (row[q - first] + row[q + 2 - first]));
+      const std::size_t lo = k >= a + band ? k - band : a, hi = std::min(b, k + band);
+      row.resize(hi - lo + 3);
+      for (std::size_t q = lo - 1; q <= hi + 1; ++q) row[q + 1 - lo] = J(k, q);
+      for (std::size_t q = lo; q <= hi; ++q) {
+        const auto r = static_cast<std::ptrdiff_t>(k - a), col = static_cast<std::ptrdiff_t>(q - a);
+        band_storage[static_cast<std::size_t>(kl + ku + r - col + col * ldab)] =
+            row[q + 1 - lo] - 0.5 * (row[q - lo] + row[q + 2 - lo]);
+      }
     }
-    Eigen::SparseMatrix<double> A(static_cast<int>(m), static_cast<int>(m));
-    A.setFromTriplets(t.begin(), t.end());
-    Eigen::VectorXd rhs(static_cast<int>(m));
-    for (std::size_t k = a; k <= b; ++k) rhs(static_cast<int>(k - a)) = residual[k];
-    Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu;
-    lu.compute(A);
-    if (lu.info() == Eigen::Success) {
-      const Eigen::VectorXd d = lu.solve(rhs);
-      if (d.allFinite())
-        for (std::size_t k = a; k <= b; ++k)
-          change[k] = limit_change(l, k, o_.omega_jacobi * d(static_cast<int>(k - a)));
-    }
+    d.resize(m);
+    for (std::size_t k = a; k <= b; ++k) d[k - a] = residual[k - first];
+    pivots.resize(m);
+    int info = 0;
+    dgbsv_(&n, &kl, &ku, &nrhs, band_storage.data(), &ldab, pivots.data(), d.data(), &n, &info);
+    if (info == 0 && std::all_of(d.begin(), d.end(), [](double v) { return std::isfinite(v); }))
+      for (std::size_t k = a; k <= b; ++k) change[k - first] = limit_change(l, k, o_.omega_jacobi * d[k - a]);
     i = b + 1;
   }
 }
