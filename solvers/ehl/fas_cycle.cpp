@@ -61,12 +61,14 @@ void FasMultigrid::Impl::restrict_problem(Level& fine, Level& coarse) {
     coarse.cavitated_on_finer[I] = I > 0 && I + 1 < coarse.n && fine.P[2 * I] <= 0.0;
   }
   coarse.film_correction.clear();
+  coarse.film_of.valid = false;
   update_film(coarse);
   coarse.film_correction.resize(coarse.n);
   for (std::size_t I = 0; I < coarse.n; ++I) {
     coarse.film_correction[I] = fine.H[2 * I] - coarse.H[I];
     coarse.H[I] = fine.H[2 * I];
   }
+  coarse.film_of.valid = false;  // the injected film, equal to the corrected one up to rounding
   update_coefficients(coarse);
   std::fill(coarse.f.begin(), coarse.f.end(), 0.0);
   for (std::size_t I = 1; I + 1 < coarse.n; ++I)

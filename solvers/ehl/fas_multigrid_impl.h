@@ -107,6 +107,13 @@ class FasMultigrid::Impl {
     /// cavitated and pressurised from one cycle to the next: factor 0.69 at (2, 10) on 2049
     /// nodes, 0.04–0.2 held (docs/research/ehl-multigrid-rebuild.md, twelfth session).
     std::vector<char> cavitated_on_finer;
+    /// What the film H was last computed from by update_film (the whole grid's deformation):
+    /// valid until a window's film or a node's film is moved, or its FAS correction changes.
+    struct FilmSource {
+      std::vector<double> P;
+      double H0 = 0.0;
+      bool valid = false;
+    } film_of;
     double g = 0.0;  ///< FAS right-hand side of the force balance
     double seconds = 0.0;
   };

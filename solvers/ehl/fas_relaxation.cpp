@@ -132,6 +132,7 @@ double FasMultigrid::Impl::gauss_seidel_derivative(const ReynoldsCoefficients& c
 }
 
 void FasMultigrid::Impl::move_film_near(Level& l, std::size_t i, double delta) const {
+  l.film_of.valid = false;
   const double c = problem_.deformation_factor() / pi;
   for (std::size_t k = i >= 2 ? i - 2 : 0; k <= std::min(l.n - 1, i + 2); ++k)
     l.H[k] -= c * l.deformation.kernel(k > i ? k - i : i - k) * delta;
