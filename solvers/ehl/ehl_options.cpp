@@ -72,6 +72,9 @@ model::OptionTable<EhlOptions> make_grid_table() {
            {.description = "outlet end of the domain (given with x_in)", .unset = 0.0});
   t.choice("cycle", &EhlOptions::cycle, cycle_choices(),
            {.description = "multigrid cycle: one (V) or two (W) coarse-grid visits per cycle, or an F-cycle"});
+  t.integer("w_cycle_levels", &EhlOptions::w_cycle_levels, 1, 14,
+            {.description = "levels above the coarsest grid on which a W-cycle visits the coarser grid twice (once "
+                            "above them: O(N) a cycle)"});
   t.integer("max_cycles", &EhlOptions::max_cycles, 1, 100000,
             {.description = "cycles on the finest grid before the solve is reported unconverged"});
   t.integer("max_levels", &EhlOptions::max_levels, 2, 14, {.description = "cap on the levels target_error adds"});

@@ -19,8 +19,10 @@ void FasMultigrid::Impl::cycle(std::size_t k, CycleType type) {
   restrict_problem(fine, coarse);
   const std::vector<double> injected = coarse.P;
   if (type == CycleType::W) {
+    // Two visits up to w_cycle_levels above the coarsest grid, one above them: a full W-cycle
+    // costs ν sweeps of the finest grid per level in one dimension, O(N log N) a cycle.
     cycle(k - 1, CycleType::W);
-    cycle(k - 1, CycleType::W);
+    if (k <= static_cast<std::size_t>(o_.w_cycle_levels)) cycle(k - 1, CycleType::W);
   } else if (type == CycleType::F) {
     cycle(k - 1, CycleType::F);
     cycle(k - 1, CycleType::V);

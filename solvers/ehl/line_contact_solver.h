@@ -47,6 +47,11 @@ struct EhlOptions {
   /// W: V-cycles degrade with depth on live coarse grids (0.54 → 0.79 from 2 to 7 levels),
   /// W-cycles do not (0.42) (docs/research/ehl-multigrid-rebuild.md, eighth session).
   CycleType cycle = CycleType::W;
+  /// Levels above the coarsest grid on which a W-cycle visits the coarser grid twice; above
+  /// them it visits it once, so a cycle costs O(N) instead of the full W-cycle's O(N log N) in
+  /// one dimension. 5 converges the 71-point (M, L) map on the default grid and on 4097, 8193
+  /// and 16385 nodes; 4 leaves (2, 25) on 16385 nodes unconverged (sixteenth session).  [1, 14]
+  int w_cycle_levels = 5;
   int pre_sweeps = 2;             ///< relaxations before the coarse-grid correction    [0, 20]
   int post_sweeps = 1;            ///< relaxations after it                             [0, 20]
   int max_cycles = 60;            ///< cycles on the finest grid before a failure        [1, 100000]
