@@ -73,7 +73,7 @@ std::size_t FasMultigrid::Impl::coarsest_nodes() const {
   // A quarter of the pressure zone's width scale, the larger of b and ℓ, in X = x/ℓ: 0.25 in
   // Hertzian scaling (ℓ = b); in rigid scaling b ≈ 0.72·M·ℓ, so ℓ/4 up to M ≈ 1.4, b/4 above.
   const double zone = std::max(problem_.hertz_half_width() / problem_.length_scale(), 1.0);
-  return nodes_resolving(std::min(0.25 * zone, std::sqrt(film_estimate())));
+  return nodes_resolving(std::min(0.25 * zone, coarsest_film_spacing * std::sqrt(film_estimate())));
 }
 
 int FasMultigrid::Impl::levels_for_finest(std::size_t nodes) {
@@ -87,7 +87,8 @@ int FasMultigrid::Impl::levels_for_finest(std::size_t nodes) {
   // allows one: the direct Newton solve alone is not globally convergent (strict descent found
   // no step at M 2.15, L 28.3 on 161 nodes, residual 1e-3 for 60 cycles; with 81 nodes below it
   // 0.25 a cycle, fourteenth session).
-  const std::size_t film_nodes = o_.coarsest_nodes > 0 ? coarsest_ : nodes_resolving(std::sqrt(film_estimate()));
+  const std::size_t film_nodes =
+      o_.coarsest_nodes > 0 ? coarsest_ : nodes_resolving(coarsest_film_spacing * std::sqrt(film_estimate()));
   if (levels == 1 && intervals % 2 == 0 && intervals / 2 >= film_nodes - 1) {
     intervals /= 2;
     ++levels;
