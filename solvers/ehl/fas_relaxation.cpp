@@ -53,9 +53,9 @@ void FasMultigrid::Impl::relax(Level& l, std::size_t first, std::size_t end, con
     if (i > 1 && !l.cavitated_on_finer[i - 1]) l.P[i - 1] -= 0.5 * change;
     if (i + 2 < l.n && !l.cavitated_on_finer[i + 1]) l.P[i + 1] -= 0.5 * change;
   }
-  // P ≥ 0 where the changes reached (first − 1 … end); a whole-grid sweep clips every node, so
+  // P ≥ 0 where the changes reached, first − 1 … end: the whole grid for a whole-grid sweep, so
   // that an interpolated start's negative pressures are removed.
-  for (std::size_t i = first == 1 && end == l.n - 1 ? 0 : first - 1; i <= end; ++i) l.P[i] = std::max(l.P[i], 0.0);
+  for (std::size_t i = first - 1; i <= end; ++i) l.P[i] = std::max(l.P[i], 0.0);
   l.P.front() = l.P.back() = 0.0;
   refresh_film();
   // Gauss–Seidel nodes after the Jacobi lines, so that they see (and answer) the lines'
