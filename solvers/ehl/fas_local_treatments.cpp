@@ -94,8 +94,6 @@ void FasMultigrid::Impl::relax_free_boundary(Level& l, const FilmBase& before, N
   node_sweeps_ += static_cast<double>(hi - lo + 1);
   const FilmBase base{l.P, l.H};
   for (int s = 0; s < o_.free_boundary_sweeps; ++s) relax(l, a, b, &base);
-  update_film(l);  // the film outside the window, which the sweeps left
-  node_sweeps_ += static_cast<double>(l.n);
 }
 
 }  // namespace gearbench::ehl
