@@ -4,17 +4,24 @@
 
 namespace gearbench::ehl {
 
-CoarsestStep coarsest_newton_step(const ReynoldsCoefficients& c, const std::vector<double>& P,
-                                  const std::vector<double>& residual,
-                                  const FilmSensitivity& film, double force_gap) {
+std::vector<char> held_nodes(const ReynoldsCoefficients& c, const std::vector<double>& P,
+                             const std::vector<double>& residual) {
+  std::vector<char> held(P.size(), 0);
+  for (std::size_t i = 1; i + 1 < P.size(); ++i) held[i] = stays_cavitated(P[i], residual[i], c.jacobian(i, i));
+  return held;
+}
+
+StepInfo CoarsestNewton::factorize(const ReynoldsCoefficients& c, const std::vector<double>& P,
+                                   const std::vector<double>& residual, const FilmSensitivity& film) {
+  factorized_ = false;
+  held_ = held_nodes(c, P, residual);
   const std::size_t n = P.size();
   const std::size_t m = n - 2;  // interior unknowns; unknown m is δH0
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m + 1), static_cast<Eigen::Index>(m + 1));
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m + 1));
   const double h2 = c.h * c.h;
   for (std::size_t i = 1; i + 1 < n; ++i) {
     const auto row = static_cast<Eigen::Index>(i - 1);
-    if (stays_cavitated(P[i], residual[i], c.jacobian(i, i))) {
+    if (held_[i]) {
       A(row, row) = 1.0;
       continue;
     }
@@ -31,17 +38,28 @@ CoarsestStep coarsest_newton_step(const ReynoldsCoefficients& c, const std::vect
       A(row, static_cast<Eigen::Index>(j - 1)) = c.jacobian(i, j) + through_film;
     }
     A(row, static_cast<Eigen::Index>(m)) = c.h0_derivative(i) + dH_prev + dH_here + dH_next;
-    b(row) = residual[i];
   }
   // Force balance: h·Σ δP_j = g − h·Σ P_j.
   for (std::size_t j = 1; j + 1 < n; ++j) A(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(j - 1)) = c.h;
+  if (!A.allFinite()) return StepInfo::non_finite_system;
+  lu_.compute(A);
+  factorized_ = true;
+  return StepInfo::success;
+}
+
+CoarsestStep CoarsestNewton::step(const std::vector<double>& residual, double force_gap) const {
+  const std::size_t n = residual.size();
+  const std::size_t m = n - 2;
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m + 1));
+  for (std::size_t i = 1; i + 1 < n; ++i)
+    if (!held_[i]) b(static_cast<Eigen::Index>(i - 1)) = residual[i];
   b(static_cast<Eigen::Index>(m)) = force_gap;
   CoarsestStep step;
-  if (!A.allFinite() || !b.allFinite()) {
+  if (!b.allFinite()) {
     step.info = StepInfo::non_finite_system;
     return step;
   }
-  const Eigen::VectorXd x = A.partialPivLu().solve(b);
+  const Eigen::VectorXd x = lu_.solve(b);
   if (!x.allFinite()) {
     step.info = StepInfo::singular;
     return step;

@@ -4,10 +4,14 @@
 // bordered by the force balance h·Σ P_j = g. The film's H0 enters the Reynolds equation
 // through the wedge and squeeze terms and through ε ∝ H³ in the Poiseuille term; so does
 // every pressure, through the deformation: the Jacobian holds both (the caller gives
-// ∂ε/∂H), and the step is a Newton step of the whole coarsest problem. Cavitated nodes (P = 0 whose own change would be negative) are held.
+// ∂ε/∂H), and the step is a Newton step of the whole coarsest problem. Cavitated nodes (P = 0
+// whose own change would be negative) are held. The factorization is kept for the steps after it
+// while they converge fast (CoarsestNewton).
 // Venner & Lubrecht (2000, §8.3) close the force balance by a damped H0 update per coarsest
 // visit; a direct solve needs no damping factor and makes the coarsest grid exact.
 #include <vector>
+
+#include <Eigen/LU>
 
 #include "reynolds_stencil.h"
 
@@ -30,11 +34,32 @@ struct CoarsestStep {
   double dH0 = 0.0;        ///< change of the film constant
 };
 
-/// One Newton step: `residual` is f − L(P) at the interior nodes, `force_gap` g − h·Σ P.
-/// Never throws on the system: a failed step comes back with its info.
-[[nodiscard]] CoarsestStep coarsest_newton_step(const ReynoldsCoefficients& c, const std::vector<double>& P,
-                                                const std::vector<double>& residual,
-                                                const FilmSensitivity& film,
-                                                double force_gap);
+/// The nodes a Newton step holds at zero (stays_cavitated): 1 where held, over the whole grid.
+[[nodiscard]] std::vector<char> held_nodes(const ReynoldsCoefficients& c, const std::vector<double>& P,
+                                           const std::vector<double>& residual);
+
+/// The Newton matrix of the coarsest problem, factorized once and kept for the steps after
+/// (the chord method; KINSOL's modified Newton keeps its Jacobian for up to ten steps in the
+/// same way): a step with a kept factorization costs two triangular solves, O(n²), instead of
+/// the LU's n³/3. The caller decides when a factorization is too old (fas_coarsest.cpp).
+class CoarsestNewton {
+ public:
+  /// Builds the Jacobian at P, `residual` is f − L(P) at the interior nodes (it decides the
+  /// held nodes), and factorizes it. Never throws on the system: a failed factorization comes
+  /// back with its info and leaves none kept.
+  StepInfo factorize(const ReynoldsCoefficients& c, const std::vector<double>& P, const std::vector<double>& residual,
+                     const FilmSensitivity& film);
+  /// Whether a factorization is kept, and for the same held nodes as `held`.
+  [[nodiscard]] bool holds(const std::vector<char>& held) const { return factorized_ && held == held_; }
+  void forget() { factorized_ = false; }
+  /// The step for `residual` (f − L(P)) and `force_gap` (g − h·Σ P) with the kept
+  /// factorization; its info is singular where the solution is not finite.
+  [[nodiscard]] CoarsestStep step(const std::vector<double>& residual, double force_gap) const;
+
+ private:
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  std::vector<char> held_;
+  bool factorized_ = false;
+};
 
 }  // namespace gearbench::ehl

@@ -13,26 +13,20 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance, d
   const auto start = std::chrono::steady_clock::now();
   double merit = coarsest_merit(l);
   const double merit_target = merit_reduction * merit;
-  for (int s = 0; s < steps; ++s) {
-    const CoarsestStep step = coarsest_newton_step(coefficients(l), l.P, coarsest_residuals(l),
-                                                   film_sensitivity(l), l.g - integral(l));
-    node_sweeps_ += dense_step_cost * std::pow(static_cast<double>(l.n), 3);
-    if (step.info != StepInfo::success) {
-      const auto& d = problem_.data();
-      failure_ = fmt::format(
-          "EHL coarsest grid ({} nodes): the (P, H0) Newton system {}; the contact in the solver's scaling: "
-          "M {:.3g}, L {:.3g}, λ {:.3g}, load F {:.3g}, pressure scale {:.3g} Pa",
-          l.n, step.info == StepInfo::singular ? "is singular" : "has non-finite coefficients", d.moes_M(),
-          d.moes_L(), problem_.lambda(), problem_.load(), problem_.pressure_scale());
-      break;
-    }
+  for (int taken = 0; taken < steps;) {
+    const auto c = coefficients(l);
+    const std::vector<double> residual = coarsest_residuals(l);
+    const bool kept = coarsest_newton_.holds(held_nodes(c, l.P, residual));
+    if (!kept && !factorize_coarsest(l, c, residual)) break;
+    const CoarsestStep step = coarsest_newton_.step(residual, l.g - integral(l));
+    node_sweeps_ += dense_solve_cost * std::pow(static_cast<double>(l.n), 2);
     // Backtracking: the largest of 1, ½, ¼, … that lowers the merit; none does: the solve
     // keeps its last iterate (strict descent: a Newton step on a live coarse grid can
     // otherwise leave the region where its problem is meaningful, eighth session).
     const std::vector<double> P0 = l.P;
     const double H00 = H0_;
     double theta = 1.0, trial = merit;
-    for (int halving = 0; halving <= max_halvings; ++halving, theta *= 0.5) {
+    for (int halving = 0; step.info == StepInfo::success && halving <= max_halvings; ++halving, theta *= 0.5) {
       for (std::size_t i = 1; i + 1 < l.n; ++i) l.P[i] = std::max(0.0, P0[i] + theta * step.dP[i]);
       H0_ = H00 + theta * step.dH0;
       trial = coarsest_merit(l);
@@ -41,8 +35,22 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance, d
     if (!(trial < merit)) {
       l.P = P0;
       H0_ = H00;
-      break;
+      // A kept factorization that no longer gives a descent direction is replaced by the
+      // Jacobian at the present iterate; a fresh one that gives none ends the solve.
+      if (!kept) {
+        if (step.info != StepInfo::success) fail_on_coarsest(l, step.info);
+        break;
+      }
+      coarsest_newton_.forget();
+      (void)coarsest_merit(l);  // the film and coefficients of the restored iterate
+      continue;
     }
+    ++taken;
+    // The factorization is kept for the next step only where the iteration is in Newton's
+    // region: a full step that lowered the merit by chord_merit_ratio or more. After a damped
+    // step the Jacobian moves with P; a kept one then found a "descent" into H0 < 0 from which
+    // no step descended (a 161-node oil-film solve at M 1.75, L 27.1, seventeenth session).
+    if (theta < 1.0 || trial > chord_merit_ratio * merit) coarsest_newton_.forget();
     merit = trial;
     if (merit <= merit_target) break;
     double largest = 0.0, size = 1e-300;
@@ -54,6 +62,23 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance, d
   }
   update_film(l);
   l.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+bool FasMultigrid::Impl::factorize_coarsest(Level& l, const ReynoldsCoefficients& c,
+                                            const std::vector<double>& residual) {
+  const StepInfo info = coarsest_newton_.factorize(c, l.P, residual, film_sensitivity(l));
+  node_sweeps_ += dense_step_cost * std::pow(static_cast<double>(l.n), 3);
+  if (info != StepInfo::success) fail_on_coarsest(l, info);
+  return info == StepInfo::success;
+}
+
+void FasMultigrid::Impl::fail_on_coarsest(const Level& l, StepInfo info) {
+  const auto& d = problem_.data();
+  failure_ = fmt::format(
+      "EHL coarsest grid ({} nodes): the (P, H0) Newton system {}; the contact in the solver's scaling: "
+      "M {:.3g}, L {:.3g}, λ {:.3g}, load F {:.3g}, pressure scale {:.3g} Pa",
+      l.n, info == StepInfo::singular ? "is singular" : "has non-finite coefficients", d.moes_M(), d.moes_L(),
+      problem_.lambda(), problem_.load(), problem_.pressure_scale());
 }
 
 std::vector<double> FasMultigrid::Impl::coarsest_residuals(const Level& l) const {

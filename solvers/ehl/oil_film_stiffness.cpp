@@ -24,7 +24,7 @@ EhlResult converged_solve(const LineContactData& d, const EhlOptions& grid, doub
   if (!r.converged)
     throw ConvergenceError(fmt::format(
         "oil-film stiffness: the EHL solve at s = {:.4f} mm (w = {:.4g} N/m, M = {:.3g}, L = {:.3g}) did not "
-        "converge in {} cycles", s * 1e3, d.load_per_length, d.moes_M(), d.moes_L(), r.cycles));
+        "converge: {}", s * 1e3, d.load_per_length, d.moes_M(), d.moes_L(), r.message));
   return r;
 }
 
