@@ -25,12 +25,19 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance, d
     // otherwise leave the region where its problem is meaningful, eighth session).
     const std::vector<double> P0 = l.P;
     const double H00 = H0_;
+    // On the grid's own problem (the start: no FAS film correction), a step may not take a
+    // positive film negative: the merit can fall there without leading to the solution (the
+    // isoviscous stage at (5, 25) on a 129-node grid with the inlet at X = −14.6 went to
+    // H0 = −2.8 and no step descended after it, seventeenth session). A coarse grid within a
+    // cycle holds a correction, whose film may dip below zero where the finer one is thin.
+    const bool keep_positive = l.film_correction.empty() && *std::min_element(l.H.begin(), l.H.end()) > 0.0;
     double theta = 1.0, trial = merit;
     for (int halving = 0; step.info == StepInfo::success && halving <= max_halvings; ++halving, theta *= 0.5) {
       for (std::size_t i = 1; i + 1 < l.n; ++i) l.P[i] = std::max(0.0, P0[i] + theta * step.dP[i]);
       H0_ = H00 + theta * step.dH0;
       trial = coarsest_merit(l);
-      if (trial < merit) break;
+      if (trial < merit && (!keep_positive || *std::min_element(l.H.begin(), l.H.end()) > 0.0)) break;
+      trial = merit;
     }
     if (!(trial < merit)) {
       l.P = P0;
