@@ -13,7 +13,7 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance, d
   const auto start = std::chrono::steady_clock::now();
   double merit = coarsest_merit(l);
   const double merit_target = merit_reduction * merit;
-  for (int taken = 0; taken < steps;) {
+  for (double taken = 0.0; taken < steps;) {
     const auto c = coefficients(l);
     const std::vector<double> residual = coarsest_residuals(l);
     const bool kept = coarsest_newton_.holds(held_nodes(c, l.P, residual));
@@ -52,7 +52,7 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance, d
       (void)coarsest_merit(l);  // the film and coefficients of the restored iterate
       continue;
     }
-    ++taken;
+    taken += kept ? chord_step_share : 1.0;
     // The factorization is kept for the next step only where the iteration is in Newton's
     // region: a full step that lowered the merit by chord_merit_ratio or more. After a damped
     // step the Jacobian moves with P; a kept one then found a "descent" into H0 < 0 from which

@@ -79,6 +79,13 @@ class FasMultigrid::Impl {
   /// median WU on the default grid and 4097 nodes: 0.1: 124, 115; 0.25: 124, 114; 0.5: 112, 110;
   /// 1, kept until a step does not descend: 119, 116).
   static constexpr double chord_merit_ratio = 0.5;
+  /// What a step with a kept factorization counts against a visit's Newton steps. Counted
+  /// whole, a visit's three steps reduced its merit less than three Newton steps, and a contact
+  /// that main converged in 5 cycles stalled (M 7.3, L 12.1, 1281 nodes, inlet at X = −9.599);
+  /// counted a third, the thermal Eyring roller's coupling stopped at 60 iterations with its
+  /// pressure solve unconverged; a half converges both (docs/ehl-model.md, seventeenth session).
+  /// That the coupling is this sensitive to the coarsest visits is itself a finding.
+  static constexpr double chord_step_share = 1.0 / 2.0;
 
   /// One grid of the hierarchy with its unknowns, coefficients and FAS right-hand sides.
   struct Level {
@@ -300,11 +307,11 @@ class FasMultigrid::Impl {
   /// `merit_reduction` (0: no such stop), at most `steps`. A step reuses the last
   /// factorization (a chord step) after a full step that lowered the merit by
   /// chord_merit_ratio, for the same held nodes; a chord step that does not descend is
-  /// repeated with a fresh factorization. Measured (seventeenth session, with the free
-  /// boundary's film change before it), the 71-point map on the default grid and on 4097,
-  /// 8193, 16385 nodes: all converge; median WU 224 → 122,
-  /// 180 → 109, 146 → 100, 165 → 120; largest 8038 → 3328, 22451 → 5261, 21622 → 7295,
-  /// 12469 → 4215; (1, 20) on its default grid 0.65 → 0.08 s.
+  /// repeated with a fresh factorization; a chord step counts chord_step_share of a step.
+  /// Measured (seventeenth session, with the free boundary's film change before it), the
+  /// 71-point map on the default grid and on 4097, 8193, 16385 nodes: all converge; median WU
+  /// 224 → 131, 180 → 111, 146 → 99, 165 → 121; largest 8038 → 3092, 22451 → 5504,
+  /// 21622 → 7392, 12469 → 4283; (1, 20) on its default grid 0.65 → 0.06 s.
   void solve_coarsest(Level& l, int steps, double tolerance, double merit_reduction = 0.0);
   /// Factorizes the coarsest grid's Newton matrix at its present iterate; false (failure_
   /// set) where there is none.
