@@ -212,6 +212,48 @@ TEST(FasMultigrid, RigidScalingSizesTheCoarsestGridAndSpikeWindowInB) {
   EXPECT_TRUE(two.converged) << two.message;
 }
 
+// Seventeenth session, the coarsest grid's chord steps. (a) With the inlet at three times its
+// default distance, (10, 17.5) on 8193 nodes stopped as converged with H_min 19 % too large
+// (4.42e-7 m against 3.72e-7 m) until the start's Newton steps kept a positive film; its H_min
+// must agree with the solve on twice the inlet distance within 0.5 % (the two inlets' films
+// differ by ~3e-4: docs/ehl-model.md, "The inlet"). (b) A double-involute oil-film contact on
+// 1281 nodes with its inlet at X = −9.599 stalled at a residual of 1.3e-3 while chord steps
+// counted a whole Newton step in a coarsest visit; main converged it in 5 cycles.
+TEST(FasMultigrid, ChordStepsKeepLongInletsConverging) {
+  const LineContactProblem moes(LineContactData::from_moes(10.0, 17.5));
+  const auto on_inlet = [&](double factor) {
+    EhlOptions o;
+    o.nodes = 8193;
+    o.x_in = factor * moes.x_in();
+    o.x_out = moes.x_out();
+    return LineContactSolver(moes, o).try_solve();
+  };
+  const auto three = on_inlet(3.0), two = on_inlet(2.0);
+  ASSERT_TRUE(three.converged) << three.message;
+  ASSERT_TRUE(two.converged) << two.message;
+  EXPECT_NEAR(three.h_min / two.h_min, 1.0, 5e-3);
+
+  LineContactData d;
+  d.reduced_radius = 7.0659698327855914e-3;
+  d.load_per_length = 83321.919845915647;
+  d.u1 = 0.9878701867269728;
+  d.u2 = 1.7267332946110838;
+  d.reduced_modulus = 226373626373.62637;
+  d.viscosity = 0.03;
+  d.pressure_viscosity = 2e-8;
+  d.viscosity_model = ViscosityModel::roelands;
+  d.density_model = DensityModel::dowson_higginson;
+  const LineContactProblem contact(d);
+  EhlOptions o;
+  o.nodes = 1281;
+  o.stop = StopRule::residual;
+  o.tolerance = 1e-9;
+  o.x_in = -9.599;
+  o.x_out = contact.x_out();
+  const auto r = LineContactSolver(contact, o).try_solve();
+  EXPECT_TRUE(r.converged) << r.message;
+}
+
 // A contact whose dimensionless scales a double does not hold (a load of 1e-300 N/m: the
 // pressure scale underflows, the load F overflows) gives the coarsest grid no Newton step:
 // the solve returns unconverged, naming the cause, and does not throw.

@@ -12,9 +12,9 @@ std::vector<char> held_nodes(const ReynoldsCoefficients& c, const std::vector<do
 }
 
 StepInfo CoarsestNewton::factorize(const ReynoldsCoefficients& c, const std::vector<double>& P,
-                                   const std::vector<double>& residual, const FilmSensitivity& film) {
+                                   std::vector<char> held, const FilmSensitivity& film) {
   factorized_ = false;
-  held_ = held_nodes(c, P, residual);
+  held_ = std::move(held);
   const std::size_t n = P.size();
   const std::size_t m = n - 2;  // interior unknowns; unknown m is δH0
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m + 1), static_cast<Eigen::Index>(m + 1));

@@ -44,10 +44,10 @@ struct CoarsestStep {
 /// the LU's n³/3. The caller decides when a factorization is too old (fas_coarsest.cpp).
 class CoarsestNewton {
  public:
-  /// Builds the Jacobian at P, `residual` is f − L(P) at the interior nodes (it decides the
-  /// held nodes), and factorizes it. Never throws on the system: a failed factorization comes
-  /// back with its info and leaves none kept.
-  StepInfo factorize(const ReynoldsCoefficients& c, const std::vector<double>& P, const std::vector<double>& residual,
+  /// Builds the Jacobian at P with the `held` nodes (held_nodes) fixed, and factorizes it.
+  /// Never throws on the system: a failed factorization comes back with its info and leaves
+  /// none kept.
+  StepInfo factorize(const ReynoldsCoefficients& c, const std::vector<double>& P, std::vector<char> held,
                      const FilmSensitivity& film);
   /// Whether a factorization is kept, and for the same held nodes as `held`.
   [[nodiscard]] bool holds(const std::vector<char>& held) const { return factorized_ && held == held_; }

@@ -16,8 +16,9 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance, d
   for (double taken = 0.0; taken < steps;) {
     const auto c = coefficients(l);
     const std::vector<double> residual = coarsest_residuals(l);
-    const bool kept = coarsest_newton_.holds(held_nodes(c, l.P, residual));
-    if (!kept && !factorize_coarsest(l, c, residual)) break;
+    std::vector<char> held = held_nodes(c, l.P, residual);
+    const bool kept = coarsest_newton_.holds(held);
+    if (!kept && !factorize_coarsest(l, c, std::move(held))) break;
     const CoarsestStep step = coarsest_newton_.step(residual, l.g - integral(l));
     node_sweeps_ += dense_solve_cost * std::pow(static_cast<double>(l.n), 2);
     // Backtracking: the largest of 1, ½, ¼, … that lowers the merit; none does: the solve
@@ -32,14 +33,15 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance, d
     // cycle holds a correction, whose film may dip below zero where the finer one is thin.
     const bool keep_positive = l.film_correction.empty() && *std::min_element(l.H.begin(), l.H.end()) > 0.0;
     double theta = 1.0, trial = merit;
+    bool descended = false;
     for (int halving = 0; step.info == StepInfo::success && halving <= max_halvings; ++halving, theta *= 0.5) {
       for (std::size_t i = 1; i + 1 < l.n; ++i) l.P[i] = std::max(0.0, P0[i] + theta * step.dP[i]);
       H0_ = H00 + theta * step.dH0;
       trial = coarsest_merit(l);
-      if (trial < merit && (!keep_positive || *std::min_element(l.H.begin(), l.H.end()) > 0.0)) break;
-      trial = merit;
+      descended = trial < merit && (!keep_positive || *std::min_element(l.H.begin(), l.H.end()) > 0.0);
+      if (descended) break;
     }
-    if (!(trial < merit)) {
+    if (!descended) {
       l.P = P0;
       H0_ = H00;
       // A kept factorization that no longer gives a descent direction is replaced by the
@@ -71,9 +73,8 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance, d
   l.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-bool FasMultigrid::Impl::factorize_coarsest(Level& l, const ReynoldsCoefficients& c,
-                                            const std::vector<double>& residual) {
-  const StepInfo info = coarsest_newton_.factorize(c, l.P, residual, film_sensitivity(l));
+bool FasMultigrid::Impl::factorize_coarsest(Level& l, const ReynoldsCoefficients& c, std::vector<char> held) {
+  const StepInfo info = coarsest_newton_.factorize(c, l.P, std::move(held), film_sensitivity(l));
   node_sweeps_ += dense_step_cost * std::pow(static_cast<double>(l.n), 3);
   if (info != StepInfo::success) fail_on_coarsest(l, info);
   return info == StepInfo::success;

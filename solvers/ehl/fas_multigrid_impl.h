@@ -313,9 +313,9 @@ class FasMultigrid::Impl {
   /// 224 → 131, 180 → 111, 146 → 99, 165 → 121; largest 8038 → 3092, 22451 → 5504,
   /// 21622 → 7392, 12469 → 4283; (1, 20) on its default grid 0.65 → 0.06 s.
   void solve_coarsest(Level& l, int steps, double tolerance, double merit_reduction = 0.0);
-  /// Factorizes the coarsest grid's Newton matrix at its present iterate; false (failure_
-  /// set) where there is none.
-  bool factorize_coarsest(Level& l, const ReynoldsCoefficients& c, const std::vector<double>& residual);
+  /// Factorizes the coarsest grid's Newton matrix at its present iterate with the `held`
+  /// nodes fixed; false (failure_ set) where there is none.
+  bool factorize_coarsest(Level& l, const ReynoldsCoefficients& c, std::vector<char> held);
   void fail_on_coarsest(const Level& l, StepInfo info);
 
   /// Σ of the squared complementarity residuals (r_i where P_i > 0, the negative part of r_i
