@@ -212,19 +212,20 @@ TEST(FasMultigrid, RigidScalingSizesTheCoarsestGridAndSpikeWindowInB) {
   EXPECT_TRUE(two.converged) << two.message;
 }
 
-// Seventeenth session, the coarsest grid's chord steps. (a) With the inlet at three times its
-// default distance, (10, 17.5) on 8193 nodes stopped as converged with H_min 19 % too large
-// (4.42e-7 m against 3.72e-7 m) until the start's Newton steps kept a positive film; its H_min
-// must agree with the solve on twice the inlet distance within 0.5 % (the two inlets' films
-// differ by ~3e-4: docs/ehl-model.md, "The inlet"). (b) A double-involute oil-film contact on
-// 1281 nodes with its inlet at X = −9.599 stalled at a residual of 1.3e-3 while chord steps
+// Seventeenth session, the coarsest grid's chord steps. (a) With the inlet at three times that
+// session's default distance (X_in = −5.42), (10, 17.5) on 8193 nodes stopped as converged with
+// H_min 19 % too large (4.42e-7 m against 3.72e-7 m); the start's guess now carries the inlet's
+// flux (eighteenth session; it replaced a rule that the start's steps keep the film positive).
+// Its H_min must agree with the solve on twice that inlet distance within 0.5 % (the two inlets'
+// films differ by ~3e-4: docs/ehl-model.md, "The inlet"). (b) A double-involute oil-film contact
+// on 1281 nodes with its inlet at X = −9.599 stalled at a residual of 1.3e-3 while chord steps
 // counted a whole Newton step in a coarsest visit; main converged it in 5 cycles.
 TEST(FasMultigrid, ChordStepsKeepLongInletsConverging) {
   const LineContactProblem moes(LineContactData::from_moes(10.0, 17.5));
   const auto on_inlet = [&](double factor) {
     EhlOptions o;
     o.nodes = 8193;
-    o.x_in = factor * moes.x_in();
+    o.x_in = factor * -(4.5 + 9.2 / 10.0);
     o.x_out = moes.x_out();
     return LineContactSolver(moes, o).try_solve();
   };
@@ -252,6 +253,34 @@ TEST(FasMultigrid, ChordStepsKeepLongInletsConverging) {
   o.x_out = contact.x_out();
   const auto r = LineContactSolver(contact, o).try_solve();
   EXPECT_TRUE(r.converged) << r.message;
+}
+
+// Eighteenth session: the start's Hertzian guess had no pressure upstream of X = −1, and the
+// inlet's residual, ~X there, was its Newton merit (1098 against 2.7 with the inlet's flux
+// carried, 65-node coarsest grid, X_in = −8.2). Its steps were damped to 1/16 and then found no
+// descent; whether the cycles after it recovered depended on the fourth digit of X_in: at
+// (5, 2.5), X_in = −8.1988 and −8.1989 (the inlet that grows with the film puts it at −8.199),
+// 257 and 4097 nodes failed three times in four, while −8.1 and −8.3 converged. From the guess
+// that carries the flux (FasMultigrid::Impl::add_inlet_pressure) all four converge to the same
+// film, within 1e-3 of the −8.1 solve on the same grid (the inlets' own effect is ~1e-4 here).
+TEST(FasMultigrid, TheStartCarriesTheInletFlux) {
+  const LineContactProblem contact(LineContactData::from_moes(5.0, 2.5));
+  for (int nodes : {257, 4097}) {
+    const auto on_inlet = [&](double x_in) {
+      EhlOptions o;
+      o.nodes = nodes;
+      o.x_in = x_in;
+      o.x_out = contact.x_out();
+      return LineContactSolver(contact, o).try_solve();
+    };
+    const auto near = on_inlet(-8.1);
+    ASSERT_TRUE(near.converged) << near.message;
+    for (double x_in : {-8.1988, -8.1989}) {
+      const auto r = on_inlet(x_in);
+      ASSERT_TRUE(r.converged) << nodes << " nodes, X_in " << x_in << ": " << r.message;
+      EXPECT_NEAR(r.h_min / near.h_min, 1.0, 1e-3) << nodes << " nodes, X_in " << x_in;
+    }
+  }
 }
 
 // A contact whose dimensionless scales a double does not hold (a load of 1e-300 N/m: the

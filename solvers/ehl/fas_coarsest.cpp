@@ -26,19 +26,13 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance, d
     // otherwise leave the region where its problem is meaningful, eighth session).
     const std::vector<double> P0 = l.P;
     const double H00 = H0_;
-    // On the grid's own problem (the start: no FAS film correction), a step may not take a
-    // positive film negative: the merit can fall there without leading to the solution (the
-    // isoviscous stage at (5, 25) on a 129-node grid with the inlet at X = −14.6 went to
-    // H0 = −2.8 and no step descended after it, seventeenth session). A coarse grid within a
-    // cycle holds a correction, whose film may dip below zero where the finer one is thin.
-    const bool keep_positive = l.film_correction.empty() && *std::min_element(l.H.begin(), l.H.end()) > 0.0;
     double theta = 1.0, trial = merit;
     bool descended = false;
     for (int halving = 0; step.info == StepInfo::success && halving <= max_halvings; ++halving, theta *= 0.5) {
       for (std::size_t i = 1; i + 1 < l.n; ++i) l.P[i] = std::max(0.0, P0[i] + theta * step.dP[i]);
       H0_ = H00 + theta * step.dH0;
       trial = coarsest_merit(l);
-      descended = trial < merit && (!keep_positive || *std::min_element(l.H.begin(), l.H.end()) > 0.0);
+      descended = trial < merit;
       if (descended) break;
     }
     if (!descended) {
@@ -133,6 +127,22 @@ void FasMultigrid::Impl::initial_guess(Level& l) {
   for (std::size_t i = 0; i < l.n; ++i)
     if (std::abs(l.X[i]) < 1.0) h_in_contact = std::min(h_in_contact, l.H[i]);
   H0_ = film_estimate() - h_in_contact;
+  update_film(l);
+  add_inlet_pressure(l);
+}
+
+void FasMultigrid::Impl::add_inlet_pressure(Level& l) {
+  update_coefficients(l);
+  std::size_t centre = 0;
+  for (std::size_t i = 0; i < l.n; ++i)
+    if (std::abs(l.X[i]) < std::abs(l.X[centre])) centre = i;
+  const double flux = l.rho[centre] * l.H[centre];
+  // Reynolds' equation integrated once: ε dP/dX = υ(ρ̄H − ρ̄_c·H_c), marched from P = 0 at X_in
+  // over the faces up to the guess's contact at X = −1.
+  for (std::size_t i = 0; i + 1 < l.n && l.X[i + 1] < -1.0; ++i) {
+    const double rho_h = 0.5 * (l.rho[i] * l.H[i] + l.rho[i + 1] * l.H[i + 1]);
+    l.P[i + 1] = std::max(0.0, l.P[i] + state_.speed * l.h * (rho_h - flux) / l.eps_face[i]);
+  }
   update_film(l);
 }
 
