@@ -91,7 +91,9 @@ const RegisterCheck p_max_check(CheckSpec{
     },
     // Second-order multigrid, 641 nodes (eleventh session): 1.399, 1.408, 1.563 GPa on 321, 641,
     // 1281 nodes: the Barus spike at B sharpens with the grid and does not converge (docs/ehl-model.md).
-    .recorded = 1.4080, .recorded_tolerance = 0.005});
+    // Eighteenth session: 1.399 GPa on 641 nodes, the inlet now growing with the film (a longer
+    // domain, so a coarser mesh at the spike).
+    .recorded = 1.3990, .recorded_tolerance = 0.005});
 
 const RegisterCheck p_max_place(CheckSpec{
     .id = "seed004.transient.p_max_position", .section = section, .solver = solver,
