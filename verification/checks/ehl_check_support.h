@@ -29,6 +29,7 @@ struct MapPoint {
   int cycles = 0;
   double nodes = 0.0, work_units = 0.0, error_estimate = 0.0;
   double H = 0.0;         ///< film at dp/dx = 0, Moes units
+  double H_c = 0.0, H_min = 0.0;  ///< central and minimum film, Moes units
 };
 
 /// M ∈ {1, 2, 5, 10, 20, 50, 100, 200, 500, 1000} × L ∈ {0, 2.5, …, 25}, solved once per process

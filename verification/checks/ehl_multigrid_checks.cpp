@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <optional>
+#include <stdexcept>
 
 #include "check_registry.h"
 #include "ehl_check_support.h"
@@ -41,6 +42,56 @@ const RegisterCheck map_default(CheckSpec{
       }
       return CheckValue{static_cast<double>(failures), 0.0,
                         {{"points", points}, {"failed_M_L", failed}, {"largest_work_units", worst_work}}};
+    }});
+
+/// The film of (M, L) converged in both the grid and the domain: 32769 nodes, the inlet at 1.5
+/// times the default distance. The default inlet's film deficit is at most 1e-3 by its rule
+/// (LineContactProblem::x_in), and the deficit falls as X_in⁻³ (it goes as g(X_in)^−1.5 and
+/// the gap as X²), so ≤ 3e-4 here; the discretisation error on 32769 nodes is ≤ 1e-4 where the
+/// default's is ≤ 5e-3 (it falls as h², measured order ≈ 2). At (5, 25) on twice the
+/// inlet distance (X_in = −29.1) the solve on 16385 and 32769 nodes stalls at a force balance of
+/// 1e-4: 1.5 times converges (eighteenth session).
+struct ConvergedFilm {
+  double H_c, H_min;
+};
+ConvergedFilm converged_film(double M, double L) {
+  const auto d = LineContactData::from_moes(M, L);
+  const LineContactProblem p(d);
+  EhlOptions o;
+  o.nodes = 32769;
+  o.x_in = 1.5 * p.x_in();
+  o.x_out = p.x_out();
+  const auto r = LineContactSolver(p, o).solve();
+  return {r.h_central * moes_units(d), r.h_min * moes_units(d)};
+}
+
+const RegisterCheck map_accuracy(CheckSpec{
+    .id = "ehl.multigrid.map_default_accuracy", .section = section, .solver = solver,
+    .reference = "the film converged in grid and domain: 32769 nodes, the inlet at 1.5 times the default distance",
+    .quantity = "largest relative error of H_c and H_min over the M 1–1000 × L 0–25 map (ᾱ ≤ 40), default settings",
+    .unit = "-", .tolerance = {0.01, 0},
+    .justification = "issue 19: the default answer within 1 % of its grid-converged film, at every in-range point; "
+                     "the reference's own error is ≤ 4e-4 (inlet ≤ 3e-4, grid ≤ 1e-4), so a 1 % bound is the "
+                     "issue's with that margin. Before the inlet grew with the film, (5, 25) and (3, 20) were 1.2 % "
+                     "thin",
+    .tier = Tier::full, .run = [](const CheckContext&) {
+      double worst = 0.0;
+      nlohmann::json worst_point, errors = nlohmann::json::array();
+      for (const auto& pt : moes_map()) {
+        if (!pt.in_range) continue;
+        if (!pt.converged) throw std::runtime_error(fmt::format("the default solve of ({:g}, {:g}) did not converge", pt.M, pt.L));
+        const auto ref = converged_film(pt.M, pt.L);
+        const double e_c = pt.H_c / ref.H_c - 1.0, e_min = pt.H_min / ref.H_min - 1.0;
+        errors.push_back({pt.M, pt.L, pt.nodes, e_c, e_min, pt.error_estimate});
+        if (std::max(std::abs(e_c), std::abs(e_min)) > worst) {
+          worst = std::max(std::abs(e_c), std::abs(e_min));
+          worst_point = {pt.M, pt.L};
+        }
+      }
+      return CheckValue{worst, 0.0,
+                        {{"worst_M_L", worst_point},
+                         {"columns", "M, L, default nodes, error of H_c, error of H_min, the default's estimate"},
+                         {"points", errors}}};
     }});
 
 /// The grids on which the observed order is asymptotic at the order points (eleventh session):
@@ -185,6 +236,8 @@ const std::vector<MapPoint>& moes_map() {
         pt.work_units = r.work_units;
         pt.error_estimate = r.error_estimate;
         pt.H = r.h_dpdx0 * moes_units(p->data());
+        pt.H_c = r.h_central * moes_units(p->data());
+        pt.H_min = r.h_min * moes_units(p->data());
         points.push_back(pt);
       }
     return points;
