@@ -35,8 +35,15 @@ class FasMultigrid::Impl {
  private:
   static constexpr double pi = std::numbers::pi;
   /// Order of the discretisation (second-order wedge, central Poiseuille): the error estimate
-  /// from two grids is their difference over 2^p − 1.
+  /// of H_c from two grids is their difference over 2^p − 1.
   static constexpr double order = 2.0;
+  /// The order H_min converges at, lower: the minimum sits at the outlet constriction beside
+  /// the free boundary, where the scheme is first order. Measured (eighteenth session) as the
+  /// ratio of successive changes on 4097 … 32769 nodes: 2.8–3.0 at (20, 10), (5, 20),
+  /// (10, 22.5), 3.6–3.7 at (2, 10), (50, 5), (100, 5), i.e. orders 1.5–1.9, while H_c's read
+  /// 3.8–4.0. With order 2, (10, 22.5) stopped on 513 nodes estimating 0.46 % for an H_min
+  /// 0.77 % off its converged value (its 257 → 513 change happened to shrink by 3.9).
+  static constexpr double order_h_min = 1.5;
   /// The ratio of successive full-multigrid changes from which the grids count as asymptotic
   /// (2^p = 4 in the limit; 2.5 leaves room for a noisy H_min, fas_stop.cpp).
   static constexpr double asymptotic_ratio = 2.5;
@@ -378,7 +385,7 @@ class FasMultigrid::Impl {
   void start_from(const WarmStart& warm);
 
   // --- stop and figures (fas_stop.cpp) ----------------------------------------
-  [[nodiscard]] static double level_error_estimate(const std::vector<double>& figures);
+  [[nodiscard]] static double level_error_estimate(const std::vector<double>& figures, double p);
   /// A new full-multigrid level: the previous level's h_min and p_max become the coarse ones.
   void record_fmg_level(EhlResult& r, std::size_t k);
 

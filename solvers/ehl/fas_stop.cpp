@@ -53,13 +53,13 @@ void FasMultigrid::Impl::record_fmg_level(EhlResult& r, std::size_t k) {
 ///   as δ_k itself;
 /// - at order p the error cannot fall faster than 2^p a level, so it is at least
 ///   δ_{k−1}/(2^p(2^p − 1)), whatever a last change that happens to be small says.
-double FasMultigrid::Impl::level_error_estimate(const std::vector<double>& figures) {
+double FasMultigrid::Impl::level_error_estimate(const std::vector<double>& figures, double p) {
   const std::size_t n = figures.size();
   const double last = relative(figures[n - 1], figures[n - 2]);
   if (n < 3) return last;
   const double previous = relative(figures[n - 2], figures[n - 3]);
   if (previous < asymptotic_ratio * last) return last;
-  const double refinement = std::pow(2.0, order);
+  const double refinement = std::pow(2.0, p);
   return std::max(last, previous / refinement) / (refinement - 1.0);
 }
 
@@ -82,7 +82,7 @@ void FasMultigrid::Impl::update_fmg_level(EhlResult& r, std::size_t k) {
   level_h_min_ = figures.h_min;
   level_p_max_ = figures.p_max;
   if (r.fmg_H_c.size() < 2) return;
-  r.error_estimate = std::max(level_error_estimate(r.fmg_H_c), level_error_estimate(r.fmg_H_min));
+  r.error_estimate = std::max(level_error_estimate(r.fmg_H_c, order), level_error_estimate(r.fmg_H_min, order_h_min));
   if (!(w.H_min > 0.0)) r.error_estimate = std::numeric_limits<double>::infinity();
 }
 
