@@ -65,6 +65,40 @@ ConvergedFilm converged_film(double M, double L) {
   return {r.h_central * moes_units(d), r.h_min * moes_units(d)};
 }
 
+/// Each in-range point's default film against converged_film: the relative errors of H_c and
+/// H_min, solved once per process (two checks read them).
+struct MapError {
+  double M, L, nodes, H_c, H_min, estimate;
+  [[nodiscard]] double worst() const { return std::max(std::abs(H_c), std::abs(H_min)); }
+};
+const std::vector<MapError>& map_errors() {
+  static const std::vector<MapError> errors = [] {
+    std::vector<MapError> out;
+    for (const auto& pt : moes_map()) {
+      if (!pt.in_range) continue;
+      if (!pt.converged)
+        throw std::runtime_error(fmt::format("the default solve of ({:g}, {:g}) did not converge", pt.M, pt.L));
+      const auto ref = converged_film(pt.M, pt.L);
+      out.push_back({pt.M, pt.L, pt.nodes, pt.H_c / ref.H_c - 1.0, pt.H_min / ref.H_min - 1.0, pt.error_estimate});
+    }
+    return out;
+  }();
+  return errors;
+}
+
+/// The largest error over the map, where it is, and every point's figures.
+CheckValue worst_map_error() {
+  const auto& errors = map_errors();
+  const auto worst = std::max_element(errors.begin(), errors.end(),
+                                      [](const MapError& a, const MapError& b) { return a.worst() < b.worst(); });
+  nlohmann::json points = nlohmann::json::array();
+  for (const auto& e : errors) points.push_back({e.M, e.L, e.nodes, e.H_c, e.H_min, e.estimate});
+  return CheckValue{worst->worst(), 0.0,
+                    {{"worst_M_L", {worst->M, worst->L}},
+                     {"columns", "M, L, default nodes, error of H_c, error of H_min, the default's estimate"},
+                     {"points", points}}};
+}
+
 const RegisterCheck map_accuracy(CheckSpec{
     .id = "ehl.multigrid.map_default_accuracy", .section = section, .solver = solver,
     .reference = "the film converged in grid and domain: 32769 nodes, the inlet at 1.5 times the default distance",
@@ -73,26 +107,22 @@ const RegisterCheck map_accuracy(CheckSpec{
     .justification = "issue 19: the default answer within 1 % of its grid-converged film, at every in-range point; "
                      "the reference's own error is ≤ 4e-4 (inlet ≤ 3e-4, grid ≤ 1e-4), so a 1 % bound is the "
                      "issue's with that margin. Before the inlet grew with the film, (5, 25) and (3, 20) were 1.2 % "
-                     "thin; before H_min's estimate took its order 1.5, (10, 22.5) stopped on 513 nodes 0.77 % off",
-    .tier = Tier::full, .run = [](const CheckContext&) {
-      double worst = 0.0;
-      nlohmann::json worst_point, errors = nlohmann::json::array();
-      for (const auto& pt : moes_map()) {
-        if (!pt.in_range) continue;
-        if (!pt.converged) throw std::runtime_error(fmt::format("the default solve of ({:g}, {:g}) did not converge", pt.M, pt.L));
-        const auto ref = converged_film(pt.M, pt.L);
-        const double e_c = pt.H_c / ref.H_c - 1.0, e_min = pt.H_min / ref.H_min - 1.0;
-        errors.push_back({pt.M, pt.L, pt.nodes, e_c, e_min, pt.error_estimate});
-        if (std::max(std::abs(e_c), std::abs(e_min)) > worst) {
-          worst = std::max(std::abs(e_c), std::abs(e_min));
-          worst_point = {pt.M, pt.L};
-        }
-      }
-      return CheckValue{worst, 0.0,
-                        {{"worst_M_L", worst_point},
-                         {"columns", "M, L, default nodes, error of H_c, error of H_min, the default's estimate"},
-                         {"points", errors}}};
-    }});
+                     "thin",
+    .tier = Tier::full, .run = [](const CheckContext&) { return worst_map_error(); }});
+
+// The default grid is refined until its estimate is below grid.target_error (0.5 %); the estimate
+// leaves out the inlet's deficit (≤ 1e-3 by LineContactProblem::x_in), and the reference has its
+// own ≤ 4e-4: an error above 0.5 % + 0.1 % + 0.04 % is an estimate that under-reads.
+const RegisterCheck map_within_target(CheckSpec{
+    .id = "ehl.multigrid.map_default_within_target", .section = section, .solver = solver,
+    .reference = "grid.target_error 0.5 %, plus the inlet's deficit (≤ 0.1 %) and the reference's error (≤ 0.04 %)",
+    .quantity = "largest relative error of H_c and H_min over the map, default settings, against the film converged "
+                "in grid and domain",
+    .unit = "-", .tolerance = {0.0064, 0},
+    .justification = "the default's stop promises an estimated error below 0.5 %; measured 0.40 % at worst. With "
+                     "H_min's error estimated at H_c's order 2 (H_min converges at 1.5–1.9), (10, 22.5) stopped on "
+                     "513 nodes estimating 0.46 % for 0.77 %, which this fails",
+    .tier = Tier::full, .run = [](const CheckContext&) { return worst_map_error(); }});
 
 /// The grids on which the observed order is asymptotic at the order points (eleventh session):
 /// 257/513/1025 is not at (2, 10), where H_c's order reads 2.46, 2.29, 1.83, 1.89 on the
