@@ -291,22 +291,27 @@ std::string map_cell(const MapPoint& pt) {
   return fmt::format(" {:.0f} WU, {:.0f} nodes, H {:.3f} |", pt.work_units, pt.nodes, pt.H);
 }
 
+/// The map as a Markdown table: a row per M, a column per L.
+std::string map_table(const std::vector<MapPoint>& map) {
+  std::string rows;
+  double last_M = -1.0;
+  for (const auto& pt : map) {
+    if (pt.M != last_M) rows += fmt::format("{}| {} |", last_M < 0.0 ? "" : "\n", pt.M);
+    last_M = pt.M;
+    rows += map_cell(pt);
+  }
+  std::string header = "| M |", rule = "|---|";
+  for (int k = 0; k <= 10; ++k) {
+    header += fmt::format(" L = {:g} |", 2.5 * k);
+    rule += "---|";
+  }
+  return header + "\n" + rule + "\n" + rows;
+}
+
 const RegisterSection ehl_section(SectionSpec{
     .id = "ehl", .tier = Tier::fast, .add = [](const CheckContext&, reports::Report& report) {
       add_profile_figures(report);
       add_convergence_table(report);
-      std::string rows;
-      double last_M = -1.0;
-      for (const auto& pt : moes_map()) {
-        if (pt.M != last_M) rows += fmt::format("{}| {} |", last_M < 0.0 ? "" : "\n", pt.M);
-        last_M = pt.M;
-        rows += map_cell(pt);
-      }
-      std::string header = "| M |", rule = "|---|";
-      for (int k = 0; k <= 10; ++k) {
-        header += fmt::format(" L = {:g} |", 2.5 * k);
-        rule += "---|";
-      }
       report.notes.push_back({section, fmt::format(
           "**The (M, L) map at the default settings (issue 19).** One scheme: full multigrid from a "
           "coarsest grid sized by the film (solved directly in (P, H0)), W(2,1) cycles on each level until "
@@ -316,8 +321,17 @@ const RegisterSection ehl_section(SectionSpec{
           "finest grid reached and Moes' H (film at dp/dx = 0). The heavy loads (M = 200–1000) need "
           "4097–16385 nodes for a positive film and a coarsest grid of 257–513 nodes, whose dense solves "
           "dominate their work. Out of range means ᾱ = α·p_h > 40 with Barus, which the input validation "
-          "refuses.\n\n{}\n{}\n{}\n",
-          header, rule, rows)});
+          "refuses.\n\n{}\n",
+          map_table(moes_map()))});
+    }});
+
+// The map on issue 19's fixed grids (checks ehl.multigrid.map_*_nodes), full tier: 26 s of solves.
+const RegisterSection ehl_fixed_maps(SectionSpec{
+    .id = "ehl_fixed_maps", .tier = Tier::full, .add = [](const CheckContext&, reports::Report& report) {
+      for (int nodes : fixed_map_grids)
+        report.notes.push_back({section, fmt::format("**The (M, L) map on {} nodes (issue 19).** The same scheme and "
+                                                     "stop as the default, on a fixed finest grid; cells as above.\n\n{}\n",
+                                                     nodes, map_table(moes_map(nodes)))});
     }});
 
 }  // namespace
