@@ -22,6 +22,10 @@ using namespace gearbench::ehl;
 const char* section = "Multigrid line-contact EHL (steady, isothermal)";
 const char* solver = "ehl";
 
+struct Point {
+  double M, L;
+};
+
 /// The in-range points of the map on `nodes` (0: the default grid) that do not converge.
 CheckValue unconverged_points(int nodes) {
   int failures = 0, points = 0;
@@ -64,6 +68,47 @@ const bool fixed_map_checks = [] {
         .tier = Tier::full, .run = [nodes](const CheckContext&) { return unconverged_points(nodes); }});
   return true;
 }();
+
+// Seven contacts × inlets at 1, 1.3, 1.77 and 2.5 times the default distance × 641, 1281 and
+// 2561 nodes × both stops (168 solves, ~6 s). It caught what one default solve does not: chord
+// steps counted whole let (7.3, 12.1) stall at 2.5 times its inlet, and a start without the
+// inlet's flux failed on long inlets (seventeenth and eighteenth sessions, docs/ehl-model.md).
+const RegisterCheck robustness_sweep(CheckSpec{
+    .id = "ehl.multigrid.robustness_sweep", .section = section, .solver = solver,
+    .reference = "issue 19: one scheme converges from scratch, whatever the domain and grid",
+    .quantity = "solves of (M, L) = (10, 0), (20, 10), (10, 17.5), (5, 20), (50, 10), (7.3, 12.1), (3, 15) on "
+                "inlets 1–2.5 times the default, 641/1281/2561 nodes, both stops, that do not converge",
+    .unit = "solves", .tolerance = {0, 0},
+    .justification = "no fallback: a solve that does not converge is a failure",
+    .tier = Tier::fast, .run = [](const CheckContext&) {
+      constexpr Point contacts[] = {{10, 0}, {20, 10}, {10, 17.5}, {5, 20}, {50, 10}, {7.3, 12.1}, {3, 15}};
+      int failures = 0, solves = 0;
+      double work = 0.0;
+      nlohmann::json failed = nlohmann::json::array();
+      for (const auto& pt : contacts) {
+        const LineContactProblem p(LineContactData::from_moes(pt.M, pt.L));
+        for (double factor : {1.0, 1.3, 1.77, 2.5})
+          for (int nodes : {641, 1281, 2561})
+            for (StopRule stop : {StopRule::discretisation_error, StopRule::residual}) {
+              EhlOptions o;
+              o.nodes = nodes;
+              o.x_in = factor * p.x_in();
+              o.x_out = p.x_out();
+              o.stop = stop;
+              if (stop == StopRule::residual) o.tolerance = 1e-9;
+              const auto r = LineContactSolver(p, o).try_solve();
+              ++solves;
+              work += r.work_units;
+              if (!r.converged) {
+                ++failures;
+                failed.push_back({{"M", pt.M}, {"L", pt.L}, {"inlet_factor", factor}, {"nodes", nodes},
+                                  {"message", r.message}});
+              }
+            }
+      }
+      return CheckValue{static_cast<double>(failures), 0.0,
+                        {{"solves", solves}, {"failed", failed}, {"work_units_total", work}}};
+    }});
 
 /// The film of (M, L) converged in both the grid and the domain: 32769 nodes, the inlet at 1.5
 /// times the default distance. The default inlet's film deficit is at most 1e-3 by its rule
@@ -168,9 +213,6 @@ CheckValue default_accuracy(double M, double L) {
                      {"order_H_c", order_c}, {"order_H_min", order_min}, {"series_nodes", s.nodes}}};
 }
 
-struct Point {
-  double M, L;
-};
 constexpr Point accuracy_points[] = {{10, 0}, {20, 10}, {10, 17.5}};
 
 const bool accuracy_checks = [] {
