@@ -102,10 +102,7 @@ int FasMultigrid::Impl::levels_for_finest(std::size_t nodes) {
 
 double FasMultigrid::Impl::film_estimate() const {
   const auto& d = problem_.data();
-  const double M = d.moes_M();
-  const double H_moes =
-      std::pow(std::pow(3.0 / M, 7.0 / 3.0) + std::pow(2.621 * std::pow(M, -0.2), 7.0 / 3.0), 3.0 / 7.0);
-  return H_moes * d.moes_film_scale() / problem_.film_scale();
+  return moes_central_film(d.moes_M(), 0.0) * d.moes_film_scale() / problem_.film_scale();
 }
 
 void FasMultigrid::Impl::inject_fields() {

@@ -347,12 +347,13 @@ class FasMultigrid::Impl {
   /// The guess's pressure upstream of X = −1: the one that carries the contact's flux ρ̄_c·H_c
   /// through the inlet gap, as in Grubin's inlet analysis (Grubin & Vinogradova 1949: Reynolds'
   /// equation integrated once, dp/dx = 12μū(h − h')/h³ with h' the film where dp/dx = 0; as
-  /// derived in tribonet's "Grubin's approximation"). With P = 0 there, the inlet's residual, υ·d(ρ̄H)/dX ≈ X, made the start's merit:
-  /// 1098 against 2.7 with this pressure at (M 5, L 2.5) on a 65-node grid with the inlet at
-  /// X = −8.2. The Newton steps from the Hertzian guess alone were damped to 1/16 and then found
-  /// no descent that kept the film positive; the cycles after that start failed or not depending on
-  /// the fourth digit of X_in. From this guess they are full steps that converge quadratically
-  /// (eighteenth session).
+  /// derived in tribonet's "Grubin's approximation"). With P = 0 there, the inlet's residual,
+  /// υ·d(ρ̄H)/dX ≈ X, made the start's merit: 1098 against 2.7 with this pressure at (M 5,
+  /// L 2.5) on a 65-node grid with the inlet at X = −8.2. The Newton steps from the Hertzian
+  /// guess alone were damped to 1/16 and then found no descent (under the seventeenth session's
+  /// rule that they keep the film positive, which this guess made unnecessary); the cycles after
+  /// that start failed or not depending on the fourth digit of X_in. From this guess they are
+  /// full steps that converge quadratically (eighteenth session).
   void add_inlet_pressure(Level& l);
 
   // --- cycles (fas_cycle.cpp) -------------------------------------------------

@@ -14,20 +14,6 @@ constexpr double pi = std::numbers::pi;
 constexpr double martin_load_constant = 4.8950;  // w·h0/(η0·ū·R), Reynolds outlet (Martin 1916)
 constexpr double moes_switch = 3.0;              // Hertzian scaling from M = 3 upward
 
-/// Moes' central film of a line contact (Moes 1992, as given by Venner & Lubrecht 2000;
-/// ../shared/REFERENCE-FACTS.md), in Moes' units H = (h/R)·U_Σ^(−1/2): the four asymptotes
-/// blended with s = (7 + 8e^(−2H_EI/H_RI))/5. Within 6 % of the solver's own film at (10, 17.5).
-double moes_central_film(double M, double L) {
-  const double rigid_iso = 3.0 / M, elastic_iso = 2.621 * std::pow(M, -0.2);
-  const double s = (7.0 + 8.0 * std::exp(-2.0 * elastic_iso / rigid_iso)) / 5.0;
-  const double isoviscous = std::pow(std::pow(rigid_iso, 7.0 / 3.0) + std::pow(elastic_iso, 7.0 / 3.0), 3.0 * s / 7.0);
-  if (L <= 0.0) return std::pow(isoviscous, 1.0 / s);  // both piezoviscous asymptotes vanish
-  const double rigid_piezo = 1.287 * std::pow(L, 2.0 / 3.0);
-  const double elastic_piezo = 1.311 * std::pow(M, -0.125) * std::pow(L, 0.75);
-  const double piezoviscous = std::pow(std::pow(rigid_piezo, -3.5) + std::pow(elastic_piezo, -3.5), -2.0 * s / 7.0);
-  return std::pow(isoviscous + piezoviscous, 1.0 / s);
-}
-
 /// The gap outside a Hertzian line contact, in units of b²/R at X = x/b ≥ 1 (Johnson 1985,
 /// §5.6): ½(X√(X² − 1) − arcosh X), whose derivative is √(X² − 1).
 double hertzian_gap(double X) { return 0.5 * (X * std::sqrt(X * X - 1.0) - std::acosh(X)); }
@@ -53,6 +39,18 @@ double where_gap_is(double g) {
 constexpr double inlet_deficit_coefficient = 1.5;
 constexpr double inlet_deficit = 1e-3;
 }  // namespace
+
+double moes_central_film(double M, double L) {
+  const double rigid_iso = 3.0 / M, elastic_iso = 2.621 * std::pow(M, -0.2);
+  const double isoviscous_sum = std::pow(rigid_iso, 7.0 / 3.0) + std::pow(elastic_iso, 7.0 / 3.0);
+  if (L <= 0.0) return std::pow(isoviscous_sum, 3.0 / 7.0);  // both piezoviscous asymptotes vanish
+  const double s = (7.0 + 8.0 * std::exp(-2.0 * elastic_iso / rigid_iso)) / 5.0;
+  const double isoviscous = std::pow(isoviscous_sum, 3.0 * s / 7.0);
+  const double rigid_piezo = 1.287 * std::pow(L, 2.0 / 3.0);
+  const double elastic_piezo = 1.311 * std::pow(M, -0.125) * std::pow(L, 0.75);
+  const double piezoviscous = std::pow(std::pow(rigid_piezo, -3.5) + std::pow(elastic_piezo, -3.5), -2.0 * s / 7.0);
+  return std::pow(isoviscous + piezoviscous, 1.0 / s);
+}
 
 double LineContactData::moes_speed_sum() const { return viscosity * (u1 + u2) / (reduced_modulus * reduced_radius); }
 
