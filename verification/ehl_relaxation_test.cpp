@@ -200,6 +200,15 @@ EhlResult solve_from_scratch(double M, double L, int nodes) {
   return LineContactSolver(LineContactProblem(LineContactData::from_moes(M, L)), o).try_solve();
 }
 
+/// The contact on `nodes` with its inlet at `x_in` (the default outlet).
+EhlResult solve_on_inlet(const LineContactProblem& contact, int nodes, double x_in) {
+  EhlOptions o;
+  o.nodes = nodes;
+  o.x_in = x_in;
+  o.x_out = contact.x_out();
+  return LineContactSolver(contact, o).try_solve();
+}
+
 // Rigid scaling (M < 3) measures X in ℓ ≈ 1.39b/M, not in b (fourteenth session). (1, 25) on
 // 4097 nodes: a coarsest grid of h ≤ ℓ (65 nodes, 1.5 in b) left the force balance at 2.5e-2,
 // H0 alternating by 0.016 between the W-cycle's two coarsest visits; h ≤ max(b, ℓ)/4
@@ -222,14 +231,9 @@ TEST(FasMultigrid, RigidScalingSizesTheCoarsestGridAndSpikeWindowInB) {
 // counted a whole Newton step in a coarsest visit; main converged it in 5 cycles.
 TEST(FasMultigrid, ChordStepsKeepLongInletsConverging) {
   const LineContactProblem moes(LineContactData::from_moes(10.0, 17.5));
-  const auto on_inlet = [&](double factor) {
-    EhlOptions o;
-    o.nodes = 8193;
-    o.x_in = factor * -(4.5 + 9.2 / 10.0);
-    o.x_out = moes.x_out();
-    return LineContactSolver(moes, o).try_solve();
-  };
-  const auto three = on_inlet(3.0), two = on_inlet(2.0);
+  const double old_default_inlet = -(4.5 + 9.2 / 10.0);
+  const auto three = solve_on_inlet(moes, 8193, 3.0 * old_default_inlet);
+  const auto two = solve_on_inlet(moes, 8193, 2.0 * old_default_inlet);
   ASSERT_TRUE(three.converged) << three.message;
   ASSERT_TRUE(two.converged) << two.message;
   EXPECT_NEAR(three.h_min / two.h_min, 1.0, 5e-3);
@@ -266,17 +270,10 @@ TEST(FasMultigrid, ChordStepsKeepLongInletsConverging) {
 TEST(FasMultigrid, TheStartCarriesTheInletFlux) {
   const LineContactProblem contact(LineContactData::from_moes(5.0, 2.5));
   for (int nodes : {257, 4097}) {
-    const auto on_inlet = [&](double x_in) {
-      EhlOptions o;
-      o.nodes = nodes;
-      o.x_in = x_in;
-      o.x_out = contact.x_out();
-      return LineContactSolver(contact, o).try_solve();
-    };
-    const auto near = on_inlet(-8.1);
+    const auto near = solve_on_inlet(contact, nodes, -8.1);
     ASSERT_TRUE(near.converged) << near.message;
     for (double x_in : {-8.1988, -8.1989}) {
-      const auto r = on_inlet(x_in);
+      const auto r = solve_on_inlet(contact, nodes, x_in);
       ASSERT_TRUE(r.converged) << nodes << " nodes, X_in " << x_in << ": " << r.message;
       EXPECT_NEAR(r.h_min / near.h_min, 1.0, 1e-3) << nodes << " nodes, X_in " << x_in;
     }

@@ -36,7 +36,8 @@ double where_gap_is(double g) {
 /// 1.19–1.51 at (M, L) = (10, 0), (20, 10), (10, 17.5), (5, 25), (3, 20), H̄_c = h_c·R/b² the
 /// central film and g the Hertzian gap at the inlet. The domain is chosen for a deficit of at
 /// most 1e-3, a fifth of the default 0.5 % discretisation-error target.
-constexpr double inlet_deficit_coefficient = 1.5;
+constexpr double inlet_deficit_coefficient = 1.5;  // c, the largest measured rounded up
+constexpr double inlet_deficit_exponent = 1.5;
 constexpr double inlet_deficit = 1e-3;
 }  // namespace
 
@@ -134,7 +135,8 @@ double LineContactProblem::x_in() const {
   const double M = data_.moes_M();
   // Moes' film in Hertzian units: H̄ = h·R/b² = (π/8M)·H_Moes.
   const double film = pi / (8.0 * M) * moes_central_film(M, data_.moes_L());
-  const double flooded_gap = std::pow(inlet_deficit_coefficient / inlet_deficit, 1.0 / 1.5) * film;
+  // d = c·(H̄/g)^1.5 ≤ inlet_deficit where g ≥ (c/d)^(1/1.5)·H̄ = 131·H̄.
+  const double flooded_gap = std::pow(inlet_deficit_coefficient / inlet_deficit, 1.0 / inlet_deficit_exponent) * film;
   return -std::max(4.5 + 6.0 * 1.535 / M, where_gap_is(flooded_gap));
 }
 

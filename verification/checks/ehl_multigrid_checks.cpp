@@ -307,39 +307,46 @@ GridSeries grid_series(double M, double L, const std::vector<int>& nodes) {
   return g;
 }
 
+namespace {
+
+/// One point of the map: out of range (ᾱ > 40 with Barus, refused by the validation) or solved
+/// on `nodes` (0: the default grid).
+MapPoint solve_map_point(double M, double L, int nodes) {
+  MapPoint pt{.M = M, .L = L};
+  std::optional<LineContactProblem> p;
+  try {
+    p.emplace(LineContactData::from_moes(M, L));
+  } catch (const InputError&) {
+    return pt;
+  }
+  pt.in_range = true;
+  EhlOptions o;
+  o.nodes = nodes;
+  const auto r = LineContactSolver(*p, o).try_solve();
+  pt.converged = r.converged;
+  pt.cycles = r.cycles;
+  pt.nodes = static_cast<double>(r.X.size());
+  pt.work_units = r.work_units;
+  pt.error_estimate = r.error_estimate;
+  const double units = moes_units(p->data());
+  pt.H = r.h_dpdx0 * units;
+  pt.H_c = r.h_central * units;
+  pt.H_min = r.h_min * units;
+  return pt;
+}
+
+}  // namespace
+
 const std::vector<MapPoint>& moes_map(int nodes) {
   static std::map<int, std::vector<MapPoint>> maps;
-  const auto cached = maps.find(nodes);
-  if (cached != maps.end()) return cached->second;
-  auto& points = maps[nodes];
-  {
+  auto cached = maps.find(nodes);
+  if (cached == maps.end()) {
+    std::vector<MapPoint> points;
     for (double M : {1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0})
-      for (int k = 0; k <= 10; ++k) {
-        const double L = 2.5 * k;
-        MapPoint pt{.M = M, .L = L};
-        std::optional<LineContactProblem> p;
-        try {
-          p.emplace(LineContactData::from_moes(M, L));
-        } catch (const InputError&) {
-          points.push_back(pt);  // ᾱ = α·p_h > 40 with Barus
-          continue;
-        }
-        pt.in_range = true;
-        EhlOptions o;
-        o.nodes = nodes;
-        const auto r = LineContactSolver(*p, o).try_solve();
-        pt.converged = r.converged;
-        pt.cycles = r.cycles;
-        pt.nodes = static_cast<double>(r.X.size());
-        pt.work_units = r.work_units;
-        pt.error_estimate = r.error_estimate;
-        pt.H = r.h_dpdx0 * moes_units(p->data());
-        pt.H_c = r.h_central * moes_units(p->data());
-        pt.H_min = r.h_min * moes_units(p->data());
-        points.push_back(pt);
-      }
+      for (int k = 0; k <= 10; ++k) points.push_back(solve_map_point(M, 2.5 * k, nodes));
+    cached = maps.emplace(nodes, std::move(points)).first;
   }
-  return points;
+  return cached->second;
 }
 
 }  // namespace gearbench::verification
