@@ -9,6 +9,7 @@
 //   fas_cycle.cpp            restriction, correction, cycles and full multigrid;
 //   fas_stop.cpp             the error estimate, the stop rules and the result's figures.
 // The design and the measurements behind it: docs/research/ehl-multigrid-rebuild.md.
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <limits>
@@ -23,7 +24,11 @@
 #include "fas_multigrid.h"
 #include "reynolds_stencil.h"
 
+
 namespace gearbench::ehl {
+
+class SpikeJacobian;
+
 
 class FasMultigrid::Impl {
  public:
@@ -81,6 +86,13 @@ class FasMultigrid::Impl {
   /// A step with a kept factorization, two triangular solves of n²/2 multiply–adds each, is
   /// counted as n²/50 node-sweeps.
   static constexpr double dense_solve_cost = 1.0 / 50.0;
+  /// Multiply–adds counted as one node-sweep (the constant of the two counts above).
+  static constexpr double multiply_adds_per_sweep = 50.0;
+  /// The spike's Newton step solved by GMRES to this relative residual (an inexact Newton
+  /// step: 1e-3 and an exact LU gave H_c and H_min equal to 7 digits at (10, 17.5) on 16385
+  /// nodes, nineteenth session), restarted after and stopped at spike_krylov_iterations.
+  static constexpr double spike_krylov_tolerance = 1e-3;
+  static constexpr int spike_krylov_iterations = 30;
   /// A coarsest-grid step that lowers the merit by less than this factor has the Jacobian
   /// factorized afresh for the next step. The maps hardly depend on it (seventeenth session,
   /// median WU on the default grid and 4097 nodes: 0.1: 124, 115; 0.25: 124, 114; 0.5: 112, 110;
@@ -199,6 +211,11 @@ class FasMultigrid::Impl {
   }
   void update_film_window(Level& l, const FilmBase& base, std::size_t lo, std::size_t hi,
                           NodeRange changed) const;
+  /// Its cost in node-sweeps: a node costs one sweep (its coefficients) or its kernel sum over
+  /// the changed nodes, whichever is more.
+  [[nodiscard]] static double window_film_cost(std::size_t nodes, std::size_t changed) {
+    return static_cast<double>(nodes) * std::max(1.0, static_cast<double>(changed) / multiply_adds_per_sweep);
+  }
 
   /// ε = ρ̄H³/(η̄λ) at the nodes and faces (ε_{i+½} the mean of the nodes') and ρ̄, from the
   /// grid's own P and H; ln η̄ rather than η̄, so that ε underflows to 0 where η̄ would
@@ -297,6 +314,11 @@ class FasMultigrid::Impl {
   /// window was 0.035b at M = 2 and its edge cut the zone past the spike where ε rises from
   /// 1e-56 to O(1): (2, 25) on 8193 nodes stalled at 0.965 (fourteenth session).
   [[nodiscard]] double spike_half_width_in_X() const;
+  /// Node-sweeps of one solve of the spike's Newton step: the band's entries (each up to five
+  /// kernel terms) and its LU, then two banded triangular solves (iterations = 0: a window
+  /// within the band, solved directly) or, per GMRES iteration and once for the initial
+  /// residual, a product and the preconditioner's solves.
+  [[nodiscard]] static double spike_krylov_cost(const SpikeJacobian& J, int iterations);
 
   /// The outlet's free boundary, a grid-scale feature like the spike: free_boundary_sweeps
   /// extra sweeps over the last free_boundary_window pressurised nodes and a few beyond

@@ -1,15 +1,28 @@
 #include "reynolds_stencil.h"
 
+#include <algorithm>
+
 namespace gearbench::ehl {
 
 double ReynoldsCoefficients::jacobian(std::size_t i, std::size_t j) const {
   // Wedge and squeeze: −υ·Σ_m w_m ρ̄_{i−m} δH_{i−m}/h − ρ̄_i δH_i/ΔT with δH_k = −(D/π)K_|k−j| δP_j.
-  const auto w = wedge_weights(i);
-  const auto K = [&](std::size_t k) { return deformation.kernel(k > j ? k - j : j - k); };
+  const auto dL_dH = film_derivative(i);
   double value = 0.0;
   for (std::size_t m = 0; m < 3 && m <= i; ++m)
-    if (w[m] != 0.0) value += speed * film_factor * w[m] * rho[i - m] * K(i - m) / h;
-  if (time_step > 0.0) value += film_factor * rho[i] * K(i) / time_step;
+    if (dL_dH[m] != 0.0) value -= film_factor * dL_dH[m] * deformation.kernel(i - m > j ? i - m - j : j - (i - m));
+  return value + local_jacobian(i, j);
+}
+
+std::array<double, 3> ReynoldsCoefficients::film_derivative(std::size_t i) const {
+  const auto w = wedge_weights(i);
+  std::array<double, 3> d{};
+  for (std::size_t m = 0; m < 3 && m <= i; ++m) d[m] = -speed * w[m] * rho[i - m] / h;
+  if (time_step > 0.0) d[0] -= rho[i] / time_step;
+  return d;
+}
+
+double ReynoldsCoefficients::local_jacobian(std::size_t i, std::size_t j) const {
+  double value = 0.0;
   if (rho_dP != nullptr && j <= i && i - j < 3) {
     // −υ·w_{i−j}·(dρ̄_j/dP)·H_j/h (and −(dρ̄_i/dP)·H_i/ΔT): the density of node j moves with P_j.
     const double own = (*rho_dP)[j] * std::max((*H)[j], 0.0);
@@ -34,11 +47,8 @@ double ReynoldsCoefficients::jacobian(std::size_t i, std::size_t j) const {
 }
 
 double ReynoldsCoefficients::h0_derivative(std::size_t i) const {
-  const auto w = wedge_weights(i);
-  double value = 0.0;
-  for (std::size_t m = 0; m < 3 && m <= i; ++m) value -= speed * w[m] * rho[i - m] / h;
-  if (time_step > 0.0) value -= rho[i] / time_step;
-  return value;
+  const auto d = film_derivative(i);  // a uniform film shift reaches every film term alike
+  return d[0] + d[1] + d[2];
 }
 
 }  // namespace gearbench::ehl

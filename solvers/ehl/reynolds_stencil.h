@@ -52,8 +52,15 @@ struct ReynoldsCoefficients {
   const std::vector<double>* H = nullptr;
 
   /// ∂L_i/∂P_j at frozen ε and ρ̄ (interior i): the Poiseuille stencil and the film's
-  /// response through the kernel in the wedge and squeeze terms.
+  /// response through the kernel in the wedge and squeeze terms,
+  ///   Σ_m film_derivative(i)_m·(−(D/π)K_|i−m−j|) + local_jacobian(i, j).
   [[nodiscard]] double jacobian(std::size_t i, std::size_t j) const;
+  /// ∂L_i/∂H_{i−m}, m = 0, 1, 2, at frozen ε and ρ̄: the wedge (and squeeze) terms' response
+  /// to the film, which a pressure change reaches through the kernel.
+  [[nodiscard]] std::array<double, 3> film_derivative(std::size_t i) const;
+  /// The part of ∂L_i/∂P_j that does not pass through the film (zero for |i − j| > 2): the
+  /// Poiseuille stencil, ε's piezoviscous response and ρ̄'s own response in the wedge.
+  [[nodiscard]] double local_jacobian(std::size_t i, std::size_t j) const;
   /// ∂L_i/∂H0 at frozen ε: the wedge and squeeze terms of a uniform film shift (zero in the
   /// wedge of an incompressible film, whose flux difference does not see H0).
   [[nodiscard]] double h0_derivative(std::size_t i) const;
