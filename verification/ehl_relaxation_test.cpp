@@ -2,7 +2,8 @@
 // implies, the grid options (nodes, levels, the sized coarsest grid), and a warm start from a
 // converged solution that must stay put; F-cycles against W-cycles; the spike window on a fine
 // grid at high L; the coarsest grid and the spike window in b in rigid scaling; a coarsest grid
-// without a Newton step ends the solve with a status; deformations sharing FFTW's plans.
+// without a Newton step ends the solve with a status; deformations sharing FFTW's plans; the
+// spike window's matrix-free Jacobian and its banded preconditioner.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include "ehl/fas_multigrid.h"
 #include "ehl/line_contact_solver.h"
 #include "ehl/reynolds_stencil.h"
+#include "ehl/spike_jacobian.h"
 #include "model/errors.h"
 
 namespace gearbench::ehl {
@@ -82,6 +84,56 @@ TEST(ReynoldsStencil, JacobianHoldsThePoiseuilleStencilAndTheFilmResponse) {
   EXPECT_NEAR(c.jacobian(i, j), 0.2 * film / g.h, 1e-14);
   EXPECT_NEAR(c.jacobian(i, i + 1) - 0.3 / h2, 0.2 * (w[0] * g.deformation.kernel(1) + w[1] * g.deformation.kernel(2) +
                                                       w[2] * g.deformation.kernel(3)) / g.h, 1e-12);
+}
+
+// The spike window's Newton matrix, applied without being formed (spike_jacobian.h): its
+// entries are the Reynolds Jacobian's (the film part through the kernel plus the local band),
+// its product is that matrix's, and its band's LU solves a window within the band exactly.
+// Fails if a row's film terms sit at the wrong film nodes (entries against jacobian), if the
+// product misplaces the kernel sums, or if the preconditioner's band storage is off by a row.
+TEST(SpikeJacobian, EntriesProductAndBandSolveAreTheReynoldsJacobians) {
+  constexpr std::size_t n = 48;
+  const double h = 0.05;
+  std::vector<double> eps_face(n - 1), rho(n), rho_dP(n), H(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    rho[i] = 1.0 + 0.01 * static_cast<double>(i % 5);
+    rho_dP[i] = 0.002 * static_cast<double>(i % 3);
+    H[i] = 0.3 + 0.01 * static_cast<double>(i);
+  }
+  for (std::size_t i = 0; i + 1 < n; ++i) eps_face[i] = 0.05 * std::exp(-0.1 * static_cast<double>(i));
+  const Deformation deformation(n, h);
+  ReynoldsCoefficients c{eps_face, rho, deformation, h, 0.2, 1.0, 0.0};
+  c.rho_dP = &rho_dP;
+  c.H = &H;
+  const auto window = [&](std::size_t first, std::size_t m) {
+    SpikeJacobian J(deformation, c.film_factor, first, m);
+    for (std::size_t i = first; i < first + m; ++i) {
+      const auto d = c.film_derivative(i);
+      std::array<double, 5> band{};
+      for (std::size_t t = 0; t < 5; ++t) band[t] = c.local_jacobian(i, i + t - 2);
+      J.set_row(i, {d[2], d[1], d[0], 0.0}, band);
+    }
+    return J;
+  };
+  const std::size_t first = 6, m = 30;
+  const auto J = window(first, m);
+  Eigen::MatrixXd dense(m, m);
+  Eigen::VectorXd x(m);
+  for (std::size_t r = 0; r < m; ++r) {
+    x(static_cast<Eigen::Index>(r)) = std::sin(1.7 * static_cast<double>(r)) + 0.3;
+    for (std::size_t q = 0; q < m; ++q) {
+      dense(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(q)) = J.entry(r, q);
+      EXPECT_NEAR(J.entry(r, q), c.jacobian(first + r, first + q), 1e-12 * std::abs(c.jacobian(first + r, first + r)))
+          << r << ", " << q;
+    }
+  }
+  const Eigen::VectorXd product = J * x, expected = dense * x;
+  EXPECT_LT((product - expected).norm(), 1e-12 * expected.norm());
+  // A window of band_width + 1 nodes lies within the band: its LU is the matrix's.
+  const auto small = window(first, SpikeBandPreconditioner::band_width + 1);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(small.rows(), 1.0, 2.0);
+  const Eigen::VectorXd solved = SpikeBandPreconditioner().compute(small).solve(b);
+  EXPECT_LT((small * solved - b).norm(), 1e-10 * b.norm());
 }
 
 TEST(EhlOptions, NodesFixTheFinestGridAndTheCoarsestIsSized) {
