@@ -14,7 +14,7 @@
 #include "ehl/fas_multigrid.h"
 #include "ehl/line_contact_solver.h"
 #include "ehl/reynolds_stencil.h"
-#include "ehl/spike_jacobian.h"
+#include "ehl/kernel_jacobian.h"
 #include "model/errors.h"
 
 namespace gearbench::ehl {
@@ -86,12 +86,14 @@ TEST(ReynoldsStencil, JacobianHoldsThePoiseuilleStencilAndTheFilmResponse) {
                                                       w[2] * g.deformation.kernel(3)) / g.h, 1e-12);
 }
 
-// The spike window's Newton matrix, applied without being formed (spike_jacobian.h): its
-// entries are the Reynolds Jacobian's (the film part through the kernel plus the local band),
-// its product is that matrix's, and its band's LU solves a window within the band exactly.
-// Fails if a row's film terms sit at the wrong film nodes (entries against jacobian), if the
-// product misplaces the kernel sums, or if the preconditioner's band storage is off by a row.
-TEST(SpikeJacobian, EntriesProductAndBandSolveAreTheReynoldsJacobians) {
+// The Newton matrix of the spike's window and, bordered by H0 and the force balance, of the
+// coarsest grid, applied without being formed (kernel_jacobian.h): its entries are the Reynolds
+// Jacobian's (the film part through the kernel plus the local band), its product is that
+// matrix's, and its band's LU (with block elimination for the border) solves a system within
+// the band exactly. Fails if a row's film terms sit at the wrong film nodes (entries against
+// jacobian), if the product misplaces the kernel sums or drops the border, or if the
+// preconditioner's band storage is off by a row.
+TEST(KernelJacobian, EntriesProductAndBandSolveAreTheReynoldsJacobians) {
   constexpr std::size_t n = 48;
   const double h = 0.05;
   std::vector<double> eps_face(n - 1), rho(n), rho_dP(n), H(n);
@@ -106,7 +108,7 @@ TEST(SpikeJacobian, EntriesProductAndBandSolveAreTheReynoldsJacobians) {
   c.rho_dP = &rho_dP;
   c.H = &H;
   const auto window = [&](std::size_t first, std::size_t m) {
-    SpikeJacobian J(deformation, c.film_factor, first, m);
+    KernelJacobian J(deformation, c.film_factor, first, m);
     for (std::size_t i = first; i < first + m; ++i) {
       const auto d = c.film_derivative(i);
       std::array<double, 5> band{};
@@ -130,10 +132,39 @@ TEST(SpikeJacobian, EntriesProductAndBandSolveAreTheReynoldsJacobians) {
   const Eigen::VectorXd product = J * x, expected = dense * x;
   EXPECT_LT((product - expected).norm(), 1e-12 * expected.norm());
   // A window of band_width + 1 nodes lies within the band: its LU is the matrix's.
-  const auto small = window(first, SpikeBandPreconditioner::band_width + 1);
+  const auto small = window(first, BandPreconditioner::band_width + 1);
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(small.rows(), 1.0, 2.0);
-  const Eigen::VectorXd solved = SpikeBandPreconditioner().compute(small).solve(b);
+  const Eigen::VectorXd solved = BandPreconditioner().compute(small).solve(b);
   EXPECT_LT((small * solved - b).norm(), 1e-10 * b.norm());
+  // Bordered by H0 and the force balance (the coarsest grid's system): the product carries the
+  // border, and the block elimination solves a bordered system within the band exactly.
+  const auto bordered = [&](std::size_t nodes) {
+    KernelJacobian B(deformation, c.film_factor, first, nodes, true);
+    for (std::size_t i = first; i < first + nodes; ++i) {
+      const auto d = c.film_derivative(i);
+      std::array<double, 5> band{};
+      for (std::size_t t = 0; t < 5; ++t) band[t] = c.local_jacobian(i, i + t - 2);
+      B.set_row(i, {d[2], d[1], d[0], 0.0}, band);
+      B.set_border(i, c.h0_derivative(i) + 0.1 * static_cast<double>(i - first), h);
+    }
+    return B;
+  };
+  const auto B = bordered(m);
+  Eigen::VectorXd y(m + 1);
+  y.head(m) = x;
+  y(static_cast<Eigen::Index>(m)) = 0.7;
+  Eigen::MatrixXd dense_bordered(m + 1, m + 1);
+  for (std::size_t r = 0; r <= m; ++r)
+    for (std::size_t q = 0; q <= m; ++q)
+      dense_bordered(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(q)) = B.entry(r, q);
+  EXPECT_DOUBLE_EQ(B.entry(m, m), 0.0);
+  EXPECT_DOUBLE_EQ(B.entry(m, 3), h);
+  const Eigen::VectorXd bordered_product = B * y, bordered_expected = dense_bordered * y;
+  EXPECT_LT((bordered_product - bordered_expected).norm(), 1e-12 * bordered_expected.norm());
+  const auto small_bordered = bordered(BandPreconditioner::band_width + 1);
+  const Eigen::VectorXd rhs = Eigen::VectorXd::LinSpaced(small_bordered.rows(), -1.0, 3.0);
+  const Eigen::VectorXd bordered_solved = BandPreconditioner().compute(small_bordered).solve(rhs);
+  EXPECT_LT((small_bordered * bordered_solved - rhs).norm(), 1e-10 * rhs.norm());
 }
 
 TEST(EhlOptions, NodesFixTheFinestGridAndTheCoarsestIsSized) {

@@ -1,6 +1,9 @@
 #include "coarsest_solve.h"
 
-#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/LU>
 
 namespace gearbench::ehl {
 
@@ -11,43 +14,61 @@ std::vector<char> held_nodes(const ReynoldsCoefficients& c, const std::vector<do
   return held;
 }
 
+ReynoldsRow reynolds_row(const ReynoldsCoefficients& c, const FilmSensitivity& film, const std::vector<double>& P,
+                         std::size_t i) {
+  // Poiseuille flux differences' response to the film of nodes i − 1, i, i + 1:
+  // ∂/∂H_k of [ε_{i−½}(P_{i−1} − P_i) + ε_{i+½}(P_{i+1} − P_i)]/h².
+  const double h2 = c.h * c.h;
+  const double q_minus = (P[i - 1] - P[i]) / h2, q_plus = (P[i + 1] - P[i]) / h2;
+  const auto wedge = c.film_derivative(i);
+  ReynoldsRow row;
+  row.dL_dH = {wedge[2], wedge[1] + film.left[i - 1] * q_minus,
+               wedge[0] + film.right[i - 1] * q_minus + film.left[i] * q_plus, film.right[i] * q_plus};
+  for (std::size_t t = 0; t < 5; ++t)
+    if (i + t >= 2) row.band[t] = c.local_jacobian(i, i + t - 2);
+  row.dL_dH0 = row.dL_dH[0] + row.dL_dH[1] + row.dL_dH[2] + row.dL_dH[3];
+  return row;
+}
+
 StepInfo CoarsestNewton::factorize(const ReynoldsCoefficients& c, const std::vector<double>& P,
                                    std::vector<char> held, const FilmSensitivity& film) {
   factorized_ = false;
   held_ = std::move(held);
   const std::size_t n = P.size();
-  const std::size_t m = n - 2;  // interior unknowns; unknown m is δH0
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m + 1), static_cast<Eigen::Index>(m + 1));
-  const double h2 = c.h * c.h;
+  // Unknowns: the interior pressures 1 … n − 2, then δH0; the last row is h·Σ δP_j.
+  jacobian_.emplace(c.deformation, c.film_factor, 1, n - 2, true);
   for (std::size_t i = 1; i + 1 < n; ++i) {
-    const auto row = static_cast<Eigen::Index>(i - 1);
     if (held_[i]) {
-      A(row, row) = 1.0;
+      jacobian_->set_border(i, 0.0, c.h);
       continue;
     }
-    // Poiseuille flux differences' response to the film of nodes i − 1, i, i + 1:
-    // ∂/∂H_k of [ε_{i−½}(P_{i−1} − P_i) + ε_{i+½}(P_{i+1} − P_i)]/h².
-    const double q_minus = (P[i - 1] - P[i]) / h2, q_plus = (P[i + 1] - P[i]) / h2;
-    const double dH_prev = film.left[i - 1] * q_minus;
-    const double dH_here = film.right[i - 1] * q_minus + film.left[i] * q_plus;
-    const double dH_next = film.right[i] * q_plus;
-    const auto K = [&](std::size_t k, std::size_t j) { return c.deformation.kernel(k > j ? k - j : j - k); };
-    for (std::size_t j = 1; j + 1 < n; ++j) {
-      // δH_k = −(D/π)K_|k−j| δP_j.
-      const double through_film = -c.film_factor * (dH_prev * K(i - 1, j) + dH_here * K(i, j) + dH_next * K(i + 1, j));
-      A(row, static_cast<Eigen::Index>(j - 1)) = c.jacobian(i, j) + through_film;
-    }
-    A(row, static_cast<Eigen::Index>(m)) = c.h0_derivative(i) + dH_prev + dH_here + dH_next;
+    const ReynoldsRow row = reynolds_row(c, film, P, i);
+    const auto finite = [](const auto& values) {
+      return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
+    };
+    if (!finite(row.dL_dH) || !finite(row.band) || !std::isfinite(row.dL_dH0)) return StepInfo::non_finite_system;
+    jacobian_->set_row(i, row.dL_dH, row.band);
+    jacobian_->set_border(i, row.dL_dH0, c.h);
   }
-  // Force balance: h·Σ δP_j = g − h·Σ P_j.
-  for (std::size_t j = 1; j + 1 < n; ++j) A(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(j - 1)) = c.h;
-  if (!A.allFinite()) return StepInfo::non_finite_system;
-  lu_.compute(A);
+  if (dense()) {
+    const Eigen::Index size = jacobian_->rows();
+    Eigen::MatrixXd A(size, size);
+    for (Eigen::Index r = 0; r < size; ++r)
+      for (Eigen::Index q = 0; q < size; ++q)
+        A(r, q) = jacobian_->entry(static_cast<std::size_t>(r), static_cast<std::size_t>(q));
+    lu_.compute(A);
+  } else {
+    gmres_.setTolerance(krylov_tolerance);
+    gmres_.setMaxIterations(krylov_iterations);
+    gmres_.set_restart(krylov_iterations);
+    gmres_.compute(*jacobian_);
+    if (gmres_.preconditioner().info() != Eigen::Success) return StepInfo::singular;
+  }
   factorized_ = true;
   return StepInfo::success;
 }
 
-CoarsestStep CoarsestNewton::step(const std::vector<double>& residual, double force_gap) const {
+CoarsestStep CoarsestNewton::step(const std::vector<double>& residual, double force_gap) {
   const std::size_t n = residual.size();
   const std::size_t m = n - 2;
   Eigen::VectorXd b = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m + 1));
@@ -59,7 +80,13 @@ CoarsestStep CoarsestNewton::step(const std::vector<double>& residual, double fo
     step.info = StepInfo::non_finite_system;
     return step;
   }
-  const Eigen::VectorXd x = lu_.solve(b);
+  Eigen::VectorXd x;
+  if (dense()) {
+    x = lu_.solve(b);
+  } else {
+    x = gmres_.solve(b);
+    step.iterations = static_cast<int>(gmres_.iterations());
+  }
   if (!x.allFinite()) {
     step.info = StepInfo::singular;
     return step;

@@ -20,7 +20,8 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance, d
     const bool kept = coarsest_newton_.holds(held);
     if (!kept && !factorize_coarsest(l, c, std::move(held))) break;
     const CoarsestStep step = coarsest_newton_.step(residual, l.g - integral(l));
-    node_sweeps_ += dense_solve_cost * std::pow(static_cast<double>(l.n), 2);
+    node_sweeps_ += coarsest_newton_.dense() ? dense_solve_cost * std::pow(static_cast<double>(l.n), 2)
+                                             : krylov_solve_cost(coarsest_newton_.jacobian(), step.iterations);
     // Backtracking: the largest of 1, ½, ¼, … that lowers the merit; none does: the solve
     // keeps its last iterate (strict descent: a Newton step on a live coarse grid can
     // otherwise leave the region where its problem is meaningful, eighth session).
@@ -69,7 +70,11 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance, d
 
 bool FasMultigrid::Impl::factorize_coarsest(Level& l, const ReynoldsCoefficients& c, std::vector<char> held) {
   const StepInfo info = coarsest_newton_.factorize(c, l.P, std::move(held), film_sensitivity(l));
-  node_sweeps_ += dense_step_cost * std::pow(static_cast<double>(l.n), 3);
+  // Dense: its n² entries (~5 multiply–adds each, uncounted before the nineteenth session) and LU.
+  const auto n = static_cast<double>(l.n);
+  if (info == StepInfo::success)
+    node_sweeps_ += coarsest_newton_.dense() ? dense_step_cost * n * n * n + 5.0 * n * n / multiply_adds_per_sweep
+                                             : krylov_setup_cost(coarsest_newton_.jacobian());
   if (info != StepInfo::success) fail_on_coarsest(l, info);
   return info == StepInfo::success;
 }

@@ -9,7 +9,8 @@
 #include <Eigen/Core>
 #include <unsupported/Eigen/IterativeSolvers>
 
-#include "spike_jacobian.h"
+#include "coarsest_solve.h"
+#include "kernel_jacobian.h"
 
 namespace gearbench::ehl {
 
@@ -17,13 +18,23 @@ double FasMultigrid::Impl::spike_half_width_in_X() const {
   return o_.spike_half_width * problem_.hertz_half_width() / problem_.length_scale();
 }
 
-double FasMultigrid::Impl::spike_krylov_cost(const SpikeJacobian& J, int iterations) {
+namespace {
+/// Entries in a row of the band of J (the preconditioner's width, or the whole range).
+double band_row_width(const KernelJacobian& J) {
+  return std::min(static_cast<double>(J.rows()), 2.0 * BandPreconditioner::band_width + 1.0);
+}
+}  // namespace
+
+double FasMultigrid::Impl::krylov_setup_cost(const KernelJacobian& J) {
   const auto m = static_cast<double>(J.rows());
-  const double width = std::min(m, 2.0 * SpikeBandPreconditioner::band_width + 1.0);  // of a row of the band
-  const double band = 5.0 * m * width + std::min(m * m * m / 3.0, m * width * width / 2.0);  // entries, LU
-  const double triangular = 2.0 * m * width;
+  const double width = band_row_width(J);
+  return (5.0 * m * width + std::min(m * m * m / 3.0, m * width * width / 2.0)) / multiply_adds_per_sweep;
+}
+
+double FasMultigrid::Impl::krylov_solve_cost(const KernelJacobian& J, int iterations) {
+  const double triangular = 2.0 * static_cast<double>(J.rows()) * band_row_width(J);
   const double solves = iterations == 0 ? triangular : (iterations + 1.0) * (J.product_cost() + triangular);
-  return (band + solves) / multiply_adds_per_sweep;
+  return solves / multiply_adds_per_sweep;
 }
 
 FasMultigrid::Impl::NodeRange FasMultigrid::Impl::relax_spike(Level& l) {
@@ -57,36 +68,28 @@ FasMultigrid::Impl::NodeRange FasMultigrid::Impl::relax_spike(Level& l) {
   for (int st = 0; st < steps && descending; ++st) {
     const auto c = coefficients(l);
     const auto fs = film_sensitivity(l);
-    SpikeJacobian J(l.deformation, c.film_factor, a, m);
+    KernelJacobian J(l.deformation, c.film_factor, a, m);
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m));
-    const double h2 = l.h * l.h;
     for (std::size_t i = a; i <= b; ++i) {
       const double r = l.f[i] - operator_at(l, i);
       if (stays_cavitated(l.P[i], r, c.jacobian(i, i))) continue;  // an identity row
-      // ∂L_i/∂H_k, k = i−2 … i+1: the wedge's and ε's (ε ∝ H³) film response.
-      const auto wedge = c.film_derivative(i);
-      const double q_minus = (l.P[i - 1] - l.P[i]) / h2, q_plus = (l.P[i + 1] - l.P[i]) / h2;
-      const std::array<double, 4> dL_dH{wedge[2], wedge[1] + fs.left[i - 1] * q_minus,
-                                        wedge[0] + fs.right[i - 1] * q_minus + fs.left[i] * q_plus,
-                                        fs.right[i] * q_plus};
-      std::array<double, 5> band{};
-      for (std::size_t t = 0; t < 5; ++t)
-        if (i + t >= 2) band[t] = c.local_jacobian(i, i + t - 2);
-      J.set_row(i, dL_dH, band);
+      const ReynoldsRow row = reynolds_row(c, fs, l.P, i);
+      J.set_row(i, row.dL_dH, row.band);
       rhs(static_cast<Eigen::Index>(i - a)) = r;
     }
+    node_sweeps_ += krylov_setup_cost(J);
     Eigen::VectorXd x;
-    if (m <= SpikeBandPreconditioner::band_width + 1) {  // the band is the whole matrix: solved directly
-      x = SpikeBandPreconditioner().compute(J).solve(rhs);
-      node_sweeps_ += spike_krylov_cost(J, 0);
+    if (m <= BandPreconditioner::band_width + 1) {  // the band is the whole matrix: solved directly
+      x = BandPreconditioner().compute(J).solve(rhs);
+      node_sweeps_ += krylov_solve_cost(J, 0);
     } else {
-      Eigen::GMRES<SpikeJacobian, SpikeBandPreconditioner> gmres;
+      Eigen::GMRES<KernelJacobian, BandPreconditioner> gmres;
       gmres.setTolerance(spike_krylov_tolerance);
       gmres.setMaxIterations(spike_krylov_iterations);
       gmres.set_restart(spike_krylov_iterations);
       gmres.compute(J);
       x = gmres.solve(rhs);
-      node_sweeps_ += spike_krylov_cost(J, static_cast<int>(gmres.iterations()));
+      node_sweeps_ += krylov_solve_cost(J, static_cast<int>(gmres.iterations()));
     }
     if (!x.allFinite()) break;
     const std::vector<double> P0 = l.P;
