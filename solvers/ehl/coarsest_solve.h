@@ -5,11 +5,10 @@
 // through the wedge and squeeze terms and through ε ∝ H³ in the Poiseuille term; so does
 // every pressure, through the deformation: the Jacobian holds both (the caller gives
 // ∂ε/∂H), and the step is a Newton step of the whole coarsest problem. Cavitated nodes (P = 0
-// whose own change would be negative) are held. The step is solved by GMRES on the Jacobian
-// applied without being formed (kernel_jacobian.h), preconditioned by its bordered band; the
-// Jacobian and its preconditioner are kept for the steps after it while they converge fast
-// (CoarsestNewton). Until the nineteenth session the Jacobian was formed and factorized densely,
-// n³/150 sweeps (257 nodes at M = 1: 110 WU of a 1025-node solve per factorization).
+// whose own change would be negative) are held. The Jacobian (kernel_jacobian.h) is kept for the
+// steps after it while they converge fast (CoarsestNewton); below 257 nodes it is formed and
+// factorized densely, from 257 on its steps are GMRES steps preconditioned by its bordered band
+// (nineteenth session: a dense 257-node LU was 110 WU of a 1025-node solve at M = 1).
 // Venner & Lubrecht (2000, §8.3) close the force balance by a damped H0 update per coarsest
 // visit; a direct solve needs no damping factor and makes the coarsest grid exact.
 #include <array>

@@ -70,11 +70,13 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance, d
 
 bool FasMultigrid::Impl::factorize_coarsest(Level& l, const ReynoldsCoefficients& c, std::vector<char> held) {
   const StepInfo info = coarsest_newton_.factorize(c, l.P, std::move(held), film_sensitivity(l));
-  // Dense: its n² entries (~5 multiply–adds each, uncounted before the nineteenth session) and LU.
-  const auto n = static_cast<double>(l.n);
-  if (info == StepInfo::success)
-    node_sweeps_ += coarsest_newton_.dense() ? dense_step_cost * n * n * n + 5.0 * n * n / multiply_adds_per_sweep
-                                             : krylov_setup_cost(coarsest_newton_.jacobian());
+  // Dense: its entries (uncounted before the nineteenth session) and its LU; else the band's.
+  if (info == StepInfo::success) {
+    const auto& J = coarsest_newton_.jacobian();
+    node_sweeps_ += coarsest_newton_.dense()
+                        ? dense_step_cost * std::pow(static_cast<double>(l.n), 3) + J.dense_cost() / multiply_adds_per_sweep
+                        : BandPreconditioner::factorize_cost(J) / multiply_adds_per_sweep;
+  }
   if (info != StepInfo::success) fail_on_coarsest(l, info);
   return info == StepInfo::success;
 }

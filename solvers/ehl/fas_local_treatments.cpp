@@ -18,22 +18,9 @@ double FasMultigrid::Impl::spike_half_width_in_X() const {
   return o_.spike_half_width * problem_.hertz_half_width() / problem_.length_scale();
 }
 
-namespace {
-/// Entries in a row of the band of J (the preconditioner's width, or the whole range).
-double band_row_width(const KernelJacobian& J) {
-  return std::min(static_cast<double>(J.rows()), 2.0 * BandPreconditioner::band_width + 1.0);
-}
-}  // namespace
-
-double FasMultigrid::Impl::krylov_setup_cost(const KernelJacobian& J) {
-  const auto m = static_cast<double>(J.rows());
-  const double width = band_row_width(J);
-  return (5.0 * m * width + std::min(m * m * m / 3.0, m * width * width / 2.0)) / multiply_adds_per_sweep;
-}
-
 double FasMultigrid::Impl::krylov_solve_cost(const KernelJacobian& J, int iterations) {
-  const double triangular = 2.0 * static_cast<double>(J.rows()) * band_row_width(J);
-  const double solves = iterations == 0 ? triangular : (iterations + 1.0) * (J.product_cost() + triangular);
+  const double band = BandPreconditioner::solve_cost(J);
+  const double solves = iterations == 0 ? band : (iterations + 1.0) * (J.product_cost() + band);
   return solves / multiply_adds_per_sweep;
 }
 
@@ -77,7 +64,7 @@ FasMultigrid::Impl::NodeRange FasMultigrid::Impl::relax_spike(Level& l) {
       J.set_row(i, row.dL_dH, row.band);
       rhs(static_cast<Eigen::Index>(i - a)) = r;
     }
-    node_sweeps_ += krylov_setup_cost(J);
+    node_sweeps_ += BandPreconditioner::factorize_cost(J) / multiply_adds_per_sweep;
     Eigen::VectorXd x;
     if (m <= BandPreconditioner::band_width + 1) {  // the band is the whole matrix: solved directly
       x = BandPreconditioner().compute(J).solve(rhs);

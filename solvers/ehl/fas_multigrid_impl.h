@@ -314,12 +314,10 @@ class FasMultigrid::Impl {
   /// window was 0.035b at M = 2 and its edge cut the zone past the spike where ε rises from
   /// 1e-56 to O(1): (2, 25) on 8193 nodes stalled at 0.965 (fourteenth session).
   [[nodiscard]] double spike_half_width_in_X() const;
-  /// Node-sweeps of a Newton step by a KernelJacobian (the spike's window, the coarsest grid):
-  /// the setup, the band's entries (each up to five kernel terms) and its LU; the solve, two
-  /// banded triangular solves (iterations = 0: a range within the band, solved directly) or,
-  /// per GMRES iteration and once for the initial residual, a product and the preconditioner's
-  /// solves.
-  [[nodiscard]] static double krylov_setup_cost(const KernelJacobian& J);
+  /// Node-sweeps of solving a Newton step with a KernelJacobian whose band preconditioner is
+  /// factorized (the spike's window, the coarsest grid from 257 nodes): two banded triangular
+  /// solves (iterations = 0: a range within the band, solved directly) or, per GMRES iteration
+  /// and once for the initial residual, a product and the preconditioner's solves.
   [[nodiscard]] static double krylov_solve_cost(const KernelJacobian& J, int iterations);
 
   /// The outlet's free boundary, a grid-scale feature like the spike: free_boundary_sweeps

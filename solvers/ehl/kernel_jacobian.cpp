@@ -98,6 +98,23 @@ BandPreconditioner& BandPreconditioner::factorize(const KernelJacobian& J) {
   return *this;
 }
 
+namespace {
+/// Entries in a row of the band of J (the preconditioner's width, or the whole matrix).
+double band_row_width(const KernelJacobian& J) {
+  return std::min(static_cast<double>(J.rows()), 2.0 * BandPreconditioner::band_width + 1.0);
+}
+}  // namespace
+
+double BandPreconditioner::factorize_cost(const KernelJacobian& J) {
+  const auto m = static_cast<double>(J.rows());
+  const double width = band_row_width(J);
+  return KernelJacobian::entry_cost * m * width + std::min(m * m * m / 3.0, m * width * width / 2.0);
+}
+
+double BandPreconditioner::solve_cost(const KernelJacobian& J) {
+  return 2.0 * static_cast<double>(J.rows()) * band_row_width(J);
+}
+
 Eigen::VectorXd BandPreconditioner::band_solve(Eigen::VectorXd b) const {
   const int kl = band_width, ku = band_width, ldab = 2 * kl + ku + 1, nrhs = 1;
   int info = 0;

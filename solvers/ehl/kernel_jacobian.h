@@ -66,6 +66,9 @@ class KernelJacobian : public Eigen::EigenBase<KernelJacobian> {
   [[nodiscard]] double entry(std::size_t r, std::size_t q) const;
   /// J·x: the kernel sum u_k = Σ_q K_|k−q|·x_q over the film nodes the rows read, then each row.
   [[nodiscard]] Eigen::VectorXd apply(const Eigen::VectorXd& x) const;
+  /// Multiply–adds of one entry (up to four kernel terms and the band) and of the dense matrix.
+  static constexpr double entry_cost = 5.0;
+  [[nodiscard]] double dense_cost() const { return entry_cost * static_cast<double>(rows() * rows()); }
   /// Multiply–adds of one product.
   [[nodiscard]] double product_cost() const {
     return static_cast<double>(m_) * static_cast<double>(m_ + 3 + (bordered_ ? 2 : 0));
@@ -102,6 +105,10 @@ class BandPreconditioner {
     return apply_inverse(Eigen::VectorXd(b));
   }
   [[nodiscard]] Eigen::ComputationInfo info() const { return info_; }
+  /// Multiply–adds of factorize (the band's entries and LU) and of one solve (two banded
+  /// triangular solves) for J.
+  [[nodiscard]] static double factorize_cost(const KernelJacobian& J);
+  [[nodiscard]] static double solve_cost(const KernelJacobian& J);
 
  private:
   [[nodiscard]] Eigen::VectorXd apply_inverse(Eigen::VectorXd b) const;
