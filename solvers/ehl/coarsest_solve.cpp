@@ -92,7 +92,11 @@ CoarsestStep CoarsestNewton::step(const std::vector<double>& residual, double fo
     return step;
   }
   step.dP.assign(n, 0.0);
-  for (std::size_t j = 1; j + 1 < n; ++j) step.dP[j] = x(static_cast<Eigen::Index>(j - 1));
+  // A held node's row is the identity with a zero right-hand side, so its change is zero in
+  // exact arithmetic; the LU's pivoting and GMRES's tolerance leave it 1e-28 … 1e-20, which the
+  // clipped update kept as a tiny pressure. Such a node is no longer held by the next step's
+  // rule (P > 0), so the kept Jacobian was discarded and refactorized at every step.
+  for (std::size_t j = 1; j + 1 < n; ++j) step.dP[j] = held_[j] ? 0.0 : x(static_cast<Eigen::Index>(j - 1));
   step.dH0 = x(static_cast<Eigen::Index>(m));
   return step;
 }
