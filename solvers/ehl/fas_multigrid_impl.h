@@ -168,12 +168,16 @@ class FasMultigrid::Impl {
   /// each 65-node correction the 129-node grid's relaxation and spike solve moved ∫P by
   /// ∓2.4e-2, and the W-cycle's two visits moved H0 by ±0.016 in turn (force balance stalled
   /// at 2.5e-2 on 4097 nodes; fourteenth session). The film: the discretisation error of the film, a
-  /// difference of O(1) terms (H0, X²/2 and the deformation), is O(h²), so h ≤ c·√H_est keeps
-  /// the coarse film positive (coarsest_film_spacing; H_est is Moes' isoviscous film).
+  /// difference of O(1) terms (H0, X²/2 and the deformation), is O(h²), so h ≤ c·√H_est is to keep
+  /// the coarse film positive (coarsest_film_spacing, which says where it does not; H_est is
+  /// Moes' isoviscous film).
   [[nodiscard]] std::size_t coarsest_nodes() const;
   /// c of the coarsest grid's h ≤ c·√H_est. At M = 1000 (H_est ≈ 2.6e-4 in Hertzian units) a
   /// 65-node coarsest grid (h ≈ 6√H_est) starts with a negative film and ends in NaN, 129 nodes
-  /// (h ≈ 3√H_est) converge: 3 keeps a factor 2 in h from that failure. c = 1 (issue 19's
+  /// (h ≈ 3√H_est) converge: 3 keeps a factor 2 in h from that failure. It does not keep every
+  /// coarse film positive: at M = 100 (L 0–10) it gives 33 nodes, whose film is negative
+  /// (converged on 65 nodes too; 129 nodes 3× too thin); W-cycles recover on the finer levels
+  /// from 513 nodes, V-cycles do not (twentieth session). c = 1 (issue 19's
   /// first rebuild) made the coarsest grid 513 nodes at M = 1000 and 257 at M = 200, whose
   /// dense Newton steps were most of those solves: 7456 → 349 and 1973 → 180 WU on their default
   /// grids, the 71-point map converging on the default grid and on 4097, 8193 and 16385 nodes
