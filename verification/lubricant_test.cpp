@@ -207,6 +207,32 @@ TEST(Lubricant, GradeWithGivenNu100) {
   EXPECT_EQ(r.section.at("density_kg_m3").get<double>(), 1059.0);  // ρ15 of the PAG base
 }
 
+// A section's own ν40 and ν100 are the oil's: η(T), α by ISO/TR 15144-1 and the VI follow them,
+// as they do for an oil given by its numbers alone (the grade's ν40 of 100 mm²/s had set α).
+TEST(Lubricant, GivenViscositiesSetWhatFollowsFromThem) {
+  const json min100 = {{"grade", 100}, {"base", "mineral"}, {"nu40_mm2_s", 95}, {"nu100_mm2_s", 10.5},
+                       {"density_kg_m3", 885}, {"thermal_conductivity_W_per_mK", 0.137}, {"specific_heat_J_per_kgK", 1921}};
+  const auto r = resolve(min100, SectionForm::thermal, 90.0);
+  OilData oil;
+  oil.name = "MIN100";
+  oil.base = BaseOil::mineral;
+  oil.nu40 = Sourced{95.0, "case"};
+  oil.nu100 = Sourced{10.5, "case"};
+  oil.density_15C = Sourced{885.0, "case"};
+  const OilState state = cat().at(oil, kelvin(90.0), "t");
+  EXPECT_DOUBLE_EQ(r.section.at("pressure_viscosity_1_per_GPa").get<double>(), state.pressure_viscosity->value);
+  EXPECT_DOUBLE_EQ(r.echo.at("viscosity_index").get<double>(), cat().viscosity_index().index(95.0, 10.5));
+  const auto grade = resolve({{"grade", 100}, {"base", "mineral"}, {"nu100_mm2_s", 10.5}, {"density_kg_m3", 885},
+                              {"thermal_conductivity_W_per_mK", 0.137}, {"specific_heat_J_per_kgK", 1921}},
+                             SectionForm::thermal, 90.0);
+  EXPECT_GT(grade.section.at("pressure_viscosity_1_per_GPa").get<double>(),
+            r.section.at("pressure_viscosity_1_per_GPa").get<double>() * 1.005);
+  // a named two-point oil takes them too
+  const auto fva3 = resolve({{"name", "FVA 3"}, {"nu40_mm2_s", 95}}, SectionForm::gear, 90.0);
+  EXPECT_LT(fva3.section.at("viscosity_Pa_s").get<double>(), resolve({{"name", "FVA 3"}}, SectionForm::gear, 90.0)
+                                                                  .section.at("viscosity_Pa_s").get<double>());
+}
+
 // Seed oils named from the catalogue reproduce the numbers their cases typed, exactly: the
 // named cases give bit-identical results (cases/*_named_oil.json).
 TEST(Lubricant, SeedOilsResolveToTheirCaseNumbers) {

@@ -56,14 +56,33 @@ std::vector<FormKey> form_keys(SectionForm form) {
 /// The keys of the library in a section (removed before the kind's reader sees it).
 constexpr const char* library_keys[] = {"name", "grade", "base", "viscosity_index", "temperature_C"};
 
+/// ν40, ν100 and ρ15 a section gives replace the catalogue's before the oil's state is
+/// computed, so that what follows from them (η(T) by ASTM D341, ρ(T) and α by ISO/TR 15144-1,
+/// the VI) is the case's oil's, not the grade's (a grade 100 with ν40 95 mm²/s had kept the
+/// grade's α and VI). ρ15 is "density_kg_m3" in the thermal form, "density_15C_kg_m3" in the
+/// micropitting one (elsewhere "density_kg_m3" is ρ at the temperature: not ρ15).
+void use_case_data(model::ObjectReader& r, SectionForm form, OilData& oil) {
+  if (const auto nu40 = r.optional_number("nu40_mm2_s", model::Range::positive(1e6), "mm2/s"))
+    oil.nu40 = Sourced{*nu40, "case"};
+  if (const auto nu100 = r.optional_number("nu100_mm2_s", model::Range::positive(1e6), "mm2/s"))
+    oil.nu100 = Sourced{*nu100, "case"};
+  const char* rho15 = form == SectionForm::thermal           ? "density_kg_m3"
+                      : form == SectionForm::micropitting_oil ? "density_15C_kg_m3"
+                                                              : nullptr;
+  if (rho15)
+    if (const auto rho = r.optional_number(rho15, model::Range::positive(1e5), "kg/m3"))
+      oil.density_15C = Sourced{*rho, "case"};
+}
+
 /// The oil the section names: by "name", or by "grade" + "base" (+ "nu100_mm2_s" or "viscosity_index").
-OilData named_oil(const json& section, const std::string& path, const Catalogue& catalogue) {
+OilData named_oil(const json& section, const std::string& path, SectionForm form, const Catalogue& catalogue) {
   model::ObjectReader r(section, path);
   if (r.has("name")) {
     if (r.has("grade") || r.has("base") || r.has("viscosity_index"))
       throw InputError(fmt::format("{}.name: give either \"name\" or \"grade\" with \"base\" (and \"viscosity_index\"), "
                                    "not both", path));
     auto oil = catalogue.find(r.string("name"), r.key_path("name"));
+    if (!oil.at_temperature) use_case_data(r, form, oil);  // a single-point oil has no ν line
     Catalogue::require_data(oil, r.key_path("name"));
     return oil;
   }
@@ -80,6 +99,7 @@ OilData named_oil(const json& section, const std::string& path, const Catalogue&
     oil.nu100 = Sourced{catalogue.nu100_from_viscosity_index(oil.nu40->value, vi, r.key_path("viscosity_index")),
                         "astm_d2270(case)"};
   }
+  use_case_data(r, form, oil);
   Catalogue::require_data(oil, r.key_path("grade"));
   return oil;
 }
@@ -202,7 +222,7 @@ bool names_oil(const json& section) {
 ResolvedSection resolve_section(const json& section, const std::string& path, SectionForm form,
                                 const std::optional<CaseTemperature>& case_temperature) {
   const auto& catalogue = Catalogue::builtin();
-  const OilData oil = named_oil(section, path, catalogue);
+  const OilData oil = named_oil(section, path, form, catalogue);
   OilState state;
   json echo = {{"name", oil.name}};
   if (form == SectionForm::micropitting_oil) {
