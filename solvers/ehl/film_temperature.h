@@ -120,7 +120,7 @@ class FilmTemperature {
   std::vector<std::vector<double>> T_;                 ///< film [i][j]
   std::array<std::vector<std::vector<double>>, 2> Ts_; ///< solids [body][i][k]
   std::vector<ColumnFlow> flows_;                      ///< each column's flow of this solve()
-  std::vector<std::vector<double>> Q_;                 ///< Q(x_i, ζ_j) of flows_ [kg/(m·s)]
+  std::vector<std::vector<double>> Q_;                 ///< Q(x_i, ζ_j) [kg/(m·s)], relaxed towards flows_' (solve)
   std::vector<double> wall_stress_;  ///< each column's Eyring root τ_a of the last solve() (NaN: none yet), a Newton start
 };
 

@@ -63,8 +63,8 @@ const RegisterCheck lohner2016(CheckSpec{
     .id = "tehl.eyring.lohner2016_friction", .section = "Thermal EHL (TEHL): Ree–Eyring film", .solver = "ehl.thermal_line_contact",
     .reference = "Lohner, Ziegltrum, Stemplinger & Stahl, Adv. Tribol. 2016, 6507203, fig. 7 (their TEHL model's μ "
                  "against the sliding speed; twin discs, p_H 1200 N/mm², v_Σ 8 m/s, MIN100, Eyring τc 6 N/mm²)",
-    .quantity = "largest relative difference of μ from the paper's computed μ over its sliding points from 0.21 to "
-                "2.67 m/s (the 0.08 m/s point's coupling does not converge: its status is in the diagnostics)",
+    .quantity = "largest relative difference of μ from the paper's computed μ over its eight sliding points, 0.08 "
+                "to 2.67 m/s",
     .unit = "-", .tolerance = {0.15, 0},
     .justification = "the same Ree–Eyring law and τc, contact, solids and oil viscosities; the paper's Vogel, "
                      "pressure–viscosity (α_p(T) → Roelands z), Bode density and λ(p) constants are regressions it "
@@ -81,21 +81,15 @@ const RegisterCheck lohner2016(CheckSpec{
         nlohmann::json p = {{"sliding_speed_m_per_s", f.sliding_speed}, {"bulk_temperature_C", f.bulk_celsius},
                             {"mu_paper_computed", f.mu_computed}, {"mu_paper_measured", f.mu_measured},
                             {"converged", r.converged}, {"iterations", r.iterations}};
-        if (r.converged) {
-          p.update({{"mu", mu}, {"vs_computed", mu / f.mu_computed - 1.0}, {"vs_measured", mu / f.mu_measured - 1.0},
-                    {"h_central_m", r.h_central}, {"h_min_m", r.h_min}, {"film_dT_K", r.temperature_rise_max}});
-        } else {
-          p["message"] = r.message;
-        }
-        if (f.sliding_speed >= 0.2) {
-          if (!r.converged) throw std::runtime_error(fmt::format("v_g {} m/s: {}", f.sliding_speed, r.message));
-          worst = std::max(worst, std::abs(mu / f.mu_computed - 1.0));
-        }
+        if (!r.converged) throw std::runtime_error(fmt::format("v_g {} m/s: {}", f.sliding_speed, r.message));
+        p.update({{"mu", mu}, {"vs_computed", mu / f.mu_computed - 1.0}, {"vs_measured", mu / f.mu_measured - 1.0},
+                  {"h_central_m", r.h_central}, {"h_min_m", r.h_min}, {"film_dT_K", r.temperature_rise_max}});
+        worst = std::max(worst, std::abs(mu / f.mu_computed - 1.0));
         points.push_back(std::move(p));
       }
       return CheckValue{worst, 0.0, {{"points", points}}};
     },
-    .recorded = 0.49, .recorded_tolerance = 0.05});
+    .recorded = 0.52, .recorded_tolerance = 0.05});
 
 }  // namespace
 }  // namespace gearbench::verification
