@@ -318,7 +318,7 @@ const RegisterSection ehl_section(SectionSpec{
           "the algebraic error left is below a tenth of the discretisation-error estimate from the "
           "converged levels, levels added until that estimate of H_c and H_min is below 0.5 %. Each "
           "cell: work units (finest-grid sweeps; the Newton steps of the coarsest grid and of the spike's "
-          "window by their multiply–adds), the finest grid reached and Moes' H (film at dp/dx = 0). The "
+          "window by their multiply–adds, a restriction as a sweep of the coarse grid), the finest grid reached and Moes' H (film at dp/dx = 0). The "
           "heavy loads (M = 200–1000) need 4097–16385 nodes for a positive film. The most work goes to "
           "M = 1 at L ≥ 10 (a 257-node coarsest grid, visited up to 2⁵ times a W-cycle, whose force balance "
           "the coarse levels' spike solves undo in part: docs/ehl-model.md, twentieth session). Out of "
