@@ -120,7 +120,7 @@ struct EhlResult : model::SolveStatus {
   std::string stop_rule;    ///< the rule that accepted (or would have accepted) the solve
   int levels = 0;           ///< grid levels used
   int cycles = 0;           ///< cycles on the finest grid after full multigrid
-  double work_units = 0.0;  ///< every relaxation and coarsest solve of every stage, in finest-grid sweeps
+  double work_units = 0.0;  ///< every relaxation, restriction, local and coarsest solve of every stage, in finest-grid sweeps
   double work_units_at_error = std::numeric_limits<double>::quiet_NaN();  ///< WU when the stop rule held
   double convergence_factor = std::numeric_limits<double>::quiet_NaN();   ///< mean per-cycle factor of the residual
   std::vector<double> residual_history;    ///< scaled Reynolds residual per cycle
