@@ -210,13 +210,8 @@ Roller roller_case(const CheckContext& ctx) {
   const auto j = model::read_json_file(ctx.case_path("tehl_point_roller_eyring.json"));
   if (j.at("rheology") != "eyring") throw std::runtime_error("tehl_point_roller_eyring.json: rheology is not \"eyring\"");
   Roller r;
-  const auto& c = j.at("contact");
-  r.contact.reduced_radius = c.at("reduced_radius_m");
-  r.contact.load_per_length = c.at("load_per_length_N_per_m");
-  r.contact.u1 = c.at("surface_speeds_m_per_s")[0];
-  r.contact.u2 = c.at("surface_speeds_m_per_s")[1];
-  r.contact.reduced_modulus = c.at("reduced_modulus_Pa");
   model::ObjectReader root(j, "");
+  r.contact = testing_support::case_contact(root);
   r.lubricant = model::read_thermal_lubricant(root.object("lubricant"));
   r.solids = model::read_thermal_solids(root.object("solids"));
   r.inlet_temperature = j.at("inlet_temperature_K");

@@ -14,6 +14,7 @@
 #include "lubricant/lubricant_section.h"
 #include "model/case_reader.h"
 #include "model/json_reader.h"
+#include "support/thermal_fixtures.h"
 
 namespace gearbench::verification {
 namespace {
@@ -40,19 +41,14 @@ constexpr std::array<FrictionPoint, 8> fig7{{{0.08, 47, 0.0477, 0.0486},
 /// The case's contact at the point's speeds and bulk temperature; the oil's α by ISO/TR
 /// 15144-1 at that temperature, as `gearbench run` resolves it.
 ThermalEhlResult solve_point(const nlohmann::json& j, const FrictionPoint& f) {
-  LineContactData contact;
-  const auto& c = j.at("contact");
-  contact.reduced_radius = c.at("reduced_radius_m");
-  contact.load_per_length = c.at("load_per_length_N_per_m");
-  contact.reduced_modulus = c.at("reduced_modulus_Pa");
-  const auto& speeds = c.at("surface_speeds_m_per_s");
-  const double mean = 0.5 * (speeds[0].get<double>() + speeds[1].get<double>());
+  model::ObjectReader root(j, "");
+  LineContactData contact = testing_support::case_contact(root);
+  const double mean = 0.5 * (contact.u1 + contact.u2);
   contact.u1 = mean + 0.5 * f.sliding_speed;
   contact.u2 = mean - 0.5 * f.sliding_speed;
   const double T = f.bulk_celsius + 273.15;
   const auto oil = lubricant::resolve_section(j.at("lubricant"), "lubricant", lubricant::SectionForm::thermal,
                                               lubricant::CaseTemperature{"inlet_temperature_K", T});
-  model::ObjectReader root(j, "");
   const lubricant::ThermalRheology fluid(model::read_thermal_lubricant(model::ObjectReader(oil.section, "lubricant")), T);
   ThermalEhlOptions o;
   o.film.rheology = lubricant::ShearRheology::eyring;

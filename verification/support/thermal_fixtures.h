@@ -2,6 +2,7 @@
 // The thermal EHL example shared by the tests, the checks and the benchmarks: a steel line
 // contact (R 20 mm, 300 kN/m, E′ 220 GPa, ū 2 m/s) lubricated by a mineral oil (η0 0.05 Pa·s
 // and β 0.03 1/K at 40 °C, α 20 1/GPa), as cases/tehl_point_sliding.json.
+#include "ehl/ehl_tables.h"
 #include "ehl/line_contact_problem.h"
 #include "model/materials.h"
 
@@ -38,6 +39,16 @@ inline ehl::LineContactData sliding_contact(double slide_to_roll) {
   c.u1 = 2.0 * (1.0 + 0.5 * slide_to_roll);
   c.u2 = 2.0 * (1.0 - 0.5 * slide_to_roll);
   return c;
+}
+
+/// The dimensional "contact" section of a case (R, w, [u1, u2], E'), read by its case table.
+inline ehl::LineContactData case_contact(model::ObjectReader& root) {
+  auto section = root.object("contact");
+  ehl::ContactInput input;
+  ehl::ContactInput::table().read(section, input);
+  ehl::LineContactData d;
+  input.apply(d);
+  return d;
 }
 
 }  // namespace gearbench::testing_support
