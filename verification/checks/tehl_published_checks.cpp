@@ -13,6 +13,7 @@
 #include "check_registry.h"
 #include "ehl/thermal_line_contact.h"
 #include "lubricant/lubricant_section.h"
+#include "lubricant/viscosity_temperature.h"
 #include "model/case_reader.h"
 #include "model/json_reader.h"
 #include "support/thermal_fixtures.h"
@@ -53,7 +54,7 @@ ThermalEhlResult solve_point(const nlohmann::json& j, const FrictionPoint& f, st
   const double mean = 0.5 * (contact.u1 + contact.u2);
   contact.u1 = mean + 0.5 * f.sliding_speed;
   contact.u2 = mean - 0.5 * f.sliding_speed;
-  const double T = f.bulk_celsius + 273.15;
+  const double T = f.bulk_celsius + lubricant::celsius_zero;
   nlohmann::json section = j.at("lubricant");
   section.erase("pressure_viscosity_1_per_GPa");
   if (alpha) section["pressure_viscosity_1_per_GPa"] = *alpha;
@@ -91,6 +92,12 @@ const RegisterCheck lohner2016(CheckSpec{
     .tier = Tier::full,
     .run = [](const CheckContext& ctx) {
       const auto j = model::read_json_file(ctx.case_path("tehl_point_lohner2016.json"));
+      // The case's α is this law at its bulk temperature, written out for `gearbench run`.
+      const double case_alpha = j.at("lubricant").at("pressure_viscosity_1_per_GPa");
+      const double law_alpha = fva3_pressure_viscosity(j.at("inlet_temperature_K").get<double>() - lubricant::celsius_zero);
+      if (std::abs(case_alpha - law_alpha) > 0.005)
+        throw std::runtime_error(fmt::format("tehl_point_lohner2016.json: pressure_viscosity_1_per_GPa = {} is not FVA "
+                                             "3's α0 at its inlet temperature, {:.2f}", case_alpha, law_alpha));
       double worst = 0.0;
       nlohmann::json points = nlohmann::json::array();
       for (const auto& f : fig7) {
