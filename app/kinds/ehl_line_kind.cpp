@@ -87,7 +87,8 @@ json result_json(const ehl::LineContactProblem& p, const ehl::EhlResult& r) {
                                                  {"h_min_relative_change", finite_or_null(r.h_min_change)},
                                                  {"p_max_relative_change", finite_or_null(r.p_max_change)}}},
                        {"full_multigrid", {{"nodes", r.fmg_nodes}, {"H_c", finite_vector(r.fmg_H_c)},
-                                           {"H_min", finite_vector(r.fmg_H_min)}}}}},
+                                           {"H_min", finite_vector(r.fmg_H_min)},
+                                           {"cycles_after", r.fmg_cycles}}}}},
   };
 }
 

@@ -404,6 +404,9 @@ class FasMultigrid::Impl {
   /// the discretisation error; with levels chosen by target_error, levels are added until
   /// the estimate is below it.
   void full_multigrid(EhlResult& r);
+  /// Whether full multigrid stops at `levels` levels: a fixed grid's count, the error target
+  /// met (from three levels), or the cap.
+  [[nodiscard]] bool grid_complete(const EhlResult& r, std::size_t levels) const;
 
   /// FMG interpolation: cubic in the interior (4-point), linear next to the ends.
   static void interpolate_solution(const Level& coarse, Level& fine);
@@ -426,7 +429,18 @@ class FasMultigrid::Impl {
   /// are below error_fraction of the discretisation-error estimate, which is recomputed each
   /// cycle from the level's figures and the converged coarser levels'. The Barus pressure spike
   /// is left out: p_max does not converge with the grid (docs/ehl-model.md).
-  void iterate_to_error(EhlResult& r, std::size_t k);
+  void iterate_to_error(EhlResult& r, std::size_t k, const Watched& start);
+  /// Whether level k's full-multigrid cycle alone meets iterate_to_error's rule: its change
+  /// is measured from the interpolated start, its factor is the one measured on the last
+  /// coarser level that iterated. Accepts the level (r) if so.
+  [[nodiscard]] bool fmg_cycle_reaches_error(EhlResult& r, std::size_t k, const Watched& start);
+  /// The discretisation error the last full-multigrid change alone gives, δ_k/(2^p − 1) for
+  /// H_c and H_min: at most the level's estimate (level_error_estimate).
+  [[nodiscard]] static double last_change_estimate(const EhlResult& r);
+  /// The largest relative change of H_c, H_min and H0 (H0's against H_c) between two states.
+  [[nodiscard]] static double change_of(const Watched& now, const Watched& before);
+  /// The discretisation-error rule as the result states it, at the bound of the last level.
+  [[nodiscard]] std::string error_rule(double bound) const;
 
   /// Cycles until the scaled residual and the force balance meet the tolerance.
   void iterate_to_residual(EhlResult& r);
@@ -472,6 +486,10 @@ class FasMultigrid::Impl {
   double coarse_h_min_ = 0.0, coarse_p_max_ = 0.0, level_h_min_ = 0.0, level_p_max_ = 0.0;
   bool has_level_ = false;   ///< a full-multigrid level was recorded
   bool has_coarse_ = false;  ///< a solution on the next-coarser grid was recorded (full multigrid)
+  /// The per-cycle factor ρ at which the last level that iterated to its error was accepted,
+  /// and that level's nodes (fmg_cycle_reaches_error); ρ ≥ 1 until one has.
+  double measured_factor_ = 1.0;
+  std::size_t factor_nodes_ = 0;
   /// Why the iteration cannot go on (a coarsest grid without a Newton step); empty while it can.
   /// The solve then ends unconverged with this message: a status, not an exception.
   std::string failure_;

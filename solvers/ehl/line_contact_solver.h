@@ -137,6 +137,10 @@ struct EhlResult : model::SolveStatus {
   double coarse_h_min = 0.0, coarse_p_max = 0.0;  ///< on the next-coarser grid [m], [Pa]
   /// Per full-multigrid level: nodes, H_c, H_min (dimensionless) after its cycle.
   std::vector<double> fmg_nodes, fmg_H_c, fmg_H_min;
+  /// Per full-multigrid level: the cycles after its full-multigrid cycle under the error rule
+  /// (0: the full-multigrid cycle met the rule; the coarsest grid and levels without an
+  /// estimate count 0).
+  std::vector<int> fmg_cycles;
 
   [[nodiscard]] std::string summary() const;
 };
