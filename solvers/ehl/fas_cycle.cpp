@@ -120,8 +120,9 @@ void FasMultigrid::Impl::full_multigrid(EhlResult& r) {
     // accepted on a cycle's own change (twenty-third session: accepted on its full-multigrid
     // cycle at the residual's factor, the finest grid's H_min was up to 1.7 × the bound off its
     // discrete solution at 5 of the default map's 71 points).
+    const double fmg_change = change_of(watched(*levels_[k]), start);
     const bool finest = k + 1 == levels_.size() && grid_complete(r, k + 1);
-    if (finest || !fmg_cycle_reaches_error(r, k, start)) iterate_to_error(r, k, start);
+    if (finest || !fmg_cycle_reaches_error(r, k, fmg_change)) iterate_to_error(r, k, fmg_change);
     if (!r.converged) break;
   }
 }

@@ -415,6 +415,9 @@ class FasMultigrid::Impl {
   void start_from(const WarmStart& warm);
 
   // --- stop and figures (fas_stop.cpp) ----------------------------------------
+  /// The relative change of a figure between the full-multigrid levels `back` and `back` + 1
+  /// below the last (0: the last level's change).
+  [[nodiscard]] static double level_change(const std::vector<double>& figures, std::size_t back = 0);
   [[nodiscard]] static double level_error_estimate(const std::vector<double>& figures, double p);
   /// A new full-multigrid level: the previous level's h_min and p_max become the coarse ones.
   void record_fmg_level(EhlResult& r, std::size_t k);
@@ -429,11 +432,13 @@ class FasMultigrid::Impl {
   /// are below error_fraction of the discretisation-error estimate, which is recomputed each
   /// cycle from the level's figures and the converged coarser levels'. The Barus pressure spike
   /// is left out: p_max does not converge with the grid (docs/ehl-model.md).
-  void iterate_to_error(EhlResult& r, std::size_t k, const Watched& start);
-  /// Whether level k's full-multigrid cycle alone meets iterate_to_error's rule: its change
-  /// is measured from the interpolated start, its factor is the one measured on the last
+  /// `fmg_change`: the level's full-multigrid cycle's change from the interpolated start (the
+  /// previous change of the figures' own per-cycle factor).
+  void iterate_to_error(EhlResult& r, std::size_t k, double fmg_change);
+  /// Whether level k's full-multigrid cycle alone, which changed the figures by `change` from
+  /// the interpolated start, meets iterate_to_error's rule at the factor measured on the last
   /// coarser level that iterated. Accepts the level (r) if so.
-  [[nodiscard]] bool fmg_cycle_reaches_error(EhlResult& r, std::size_t k, const Watched& start);
+  [[nodiscard]] bool fmg_cycle_reaches_error(EhlResult& r, std::size_t k, double change);
   /// The discretisation error the last full-multigrid change alone gives, δ_k/(2^p − 1) for
   /// H_c and H_min: at most the level's estimate (level_error_estimate).
   [[nodiscard]] static double last_change_estimate(const EhlResult& r);
