@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
+#include <gsl/gsl_roots.h>
 #include <limits>
 #include <stdexcept>
 
@@ -131,6 +133,81 @@ ColumnFlow FilmTemperature::column_flow(std::size_t i, double p, double dpdx, do
   return ehl::column_flow(zeta_, std::move(eta), std::move(rho), Ua_, Ub_, dpdx, h, eyring_stress_, guess);
 }
 
+double FilmTemperature::flux_carrying_gradient(std::size_t i, double p, double dpdx, double h,
+                                               double poiseuille) const {
+  // Why (twenty-fourth session): the coupling freezes the generalized-Reynolds factors between
+  // pressure solves, and at the outlet spike of a near-rolling Eyring film the flow factor
+  // rises steeply with the gradient it was computed at (s = ∂ln(ρ/η)_e/∂ln|∂p/∂x| 5–15). A
+  // pressure solve on lagged factors then makes the spike's gradient steeper than the film can
+  // carry (seed 004's contact at M 15.9, L 18.8 on 2561 nodes: |h·∂p/∂x| 37τ0 after the nested
+  // start's first solve, against 19τ0 converged on 1281), and a column held at that gradient,
+  // i.e. at that stress, shears at τ0/η·sinh(τ/τ0) and heats until non-finite (276 K, then
+  // 1924 K, within five iterations). What the pressure solve does carry is the flux: the
+  // Poiseuille flux (ρ/η)·h³·∂p/∂x/12 of its frozen coefficient. A column at the gradient that
+  // carries that flux at its own temperatures shears less as it heats (a hotter, thinner oil
+  // needs a smaller gradient), so its heating stays bounded. Where the flow barely thins with
+  // the gradient (s ≤ 1: every Newtonian column, and the Hertzian zone and the inlet of an
+  // Eyring film, s ~ 1e-4 … 3e-3) the two gradients coincide to first order and the pressure's
+  // own is kept; holding the flux there makes the coupling stiff (tried in the fifteenth
+  // session on every column: the Hertzian zone's Poiseuille flux is a tiny remainder that a
+  // 1e-3 change of ρ* moves far).
+  if (!eyring_stress_ || !(p > 0.0 && h > 0.0 && poiseuille > 0.0)) return dpdx;
+  // s ≤ 1 for a Poiseuille wall stress h·|∂p/∂x|/2 below τ0/2 (the Eyring thinning grows as
+  // sinh of it): no column flow needed to know it.
+  if (h * std::abs(dpdx) <= *eyring_stress_ || dpdx == 0.0) return dpdx;
+  // The column's thinning s = ∂ln(ρ/η)_e/∂ln|∂p/∂x| at the pressure's gradient.
+  const double sign = dpdx < 0.0 ? -1.0 : 1.0, y0 = std::log(std::abs(dpdx));
+  constexpr double step = 1e-3;  // in ln|∂p/∂x|
+  const double s = std::log(column_flow(i, p, sign * std::exp(y0 + step), h).rho_over_eta_e() /
+                            column_flow(i, p, dpdx, h).rho_over_eta_e()) / step;
+  if (!(s > 1.0)) return dpdx;
+  // φ(y) = ln[(ρ/η)_e(e^y)·e^y] − ln[(ρ/η)·|∂p/∂x|]: the column's Poiseuille flux against the
+  // pressure solve's, in logarithms of y = ln|∂p/∂x|. The pressure solve's flux is set by its
+  // frozen wedge term too, but matching the whole mass flux fails where the column's ρ* (at its
+  // present temperatures) and the frozen one differ by more than the Poiseuille part: at the
+  // spike of seed 004's contacts no gradient of either sign then carries it. (ρ/η)_e alone need
+  // not rise with |∂p/∂x| across the whole bracket (with sliding, part of the film's stress
+  // falls as the gradient grows), so the bracket grows from the pressure's gradient until φ
+  // changes sign, and a column where it does not stops the solve with an error.
+  struct CarriedFlux {
+    const FilmTemperature* field;
+    std::size_t i;
+    double p, h, sign, target;
+  } flux{this, i, p, h, sign, std::log(poiseuille * std::abs(dpdx))};
+  gsl_function phi{[](double y, void* params) {
+                     const auto& c = *static_cast<const CarriedFlux*>(params);
+                     return std::log(c.field->column_flow(c.i, c.p, c.sign * std::exp(y), c.h).rho_over_eta_e()) + y -
+                            c.target;
+                   },
+                   &flux};
+  // Bracket the root by steps of e in |∂p/∂x| from the pressure's gradient, then Brent's method.
+  const double phi0 = GSL_FN_EVAL(&phi, y0);
+  if (phi0 == 0.0) return dpdx;
+  const double direction = phi0 > 0.0 ? -1.0 : 1.0;
+  double near = y0, far = y0 + direction;
+  constexpr int max_bracket_steps = 40;
+  for (int k = 0; GSL_FN_EVAL(&phi, far) * phi0 > 0.0; ++k) {
+    if (k == max_bracket_steps)
+      throw ConvergenceError(fmt::format("film temperature: no gradient within e^{} of {:.4g} Pa/m carries the "
+                                         "pressure solve's flux at x = {:.4g} m", max_bracket_steps, dpdx, x_[i]));
+    near = far;
+    far += direction;
+  }
+  model::gsl_use_status_codes();
+  gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+  model::gsl_check(gsl_root_fsolver_set(solver, &phi, std::min(near, far), std::max(near, far)),
+                   "flux_carrying_gradient: gsl_root_fsolver_set");
+  double y = y0;
+  int status = GSL_CONTINUE;
+  for (int k = 0; k < 100 && status == GSL_CONTINUE; ++k) {
+    model::gsl_check(gsl_root_fsolver_iterate(solver), "flux_carrying_gradient: gsl_root_fsolver_iterate");
+    y = gsl_root_fsolver_root(solver);
+    status = gsl_root_test_interval(gsl_root_fsolver_x_lower(solver), gsl_root_fsolver_x_upper(solver), 1e-12, 0.0);
+  }
+  gsl_root_fsolver_free(solver);
+  return sign * std::exp(y);
+}
+
 std::vector<double> FilmTemperature::mass_flux_profile(const ColumnFlow& flow, double h) const {
   const double dz = 1.0 / static_cast<double>(zeta_.size() - 1);
   std::vector<double> Q(zeta_.size(), 0.0);
@@ -142,7 +219,7 @@ std::vector<double> FilmTemperature::mass_flux_profile(const ColumnFlow& flow, d
 void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, const std::vector<double>& h) {
   const std::size_t nz = zeta_.size(), ns = s_.size(), n = x_.size();
   const double dz = 1.0 / static_cast<double>(nz - 1);
-  const double dpdx = dpdx_at(p, i, dx_);
+  const double dpdx = dpdx_[i];
   const ColumnFlow& flow = flows_[i];
   // The shear stress at the column's shear rate and this sweep's temperature, and ∂ln η/∂T
   // per film node for the source slope.
@@ -289,8 +366,11 @@ double FilmTemperature::sweep(const std::vector<double>& p, const std::vector<do
   return change;
 }
 
-double FilmTemperature::solve(const std::vector<double>& p, const std::vector<double>& h, double tolerance,
-                              int max_sweeps) {
+double FilmTemperature::solve(const std::vector<double>& p, const std::vector<double>& h,
+                              const std::vector<double>& poiseuille, double tolerance, int max_sweeps) {
+  dpdx_.resize(x_.size());
+  for (std::size_t i = 0; i < x_.size(); ++i)
+    dpdx_[i] = flux_carrying_gradient(i, p[i], dpdx_at(p, i, dx_), h[i], poiseuille[i]);
   // Each column's flow (velocity, shear rate, mass flux Q) is that of the temperatures this
   // solve starts from, and the sweeps update the heating τ(T, γ̇)·γ̇ at that shear rate: it
   // falls as the oil heats, which is what the source slope above assumes. Why, measured
@@ -317,7 +397,7 @@ double FilmTemperature::solve(const std::vector<double>& p, const std::vector<do
   // At the coupling's fixed point the flow is that of the converged temperatures either way.
   constexpr double mass_flux_relaxation = 0.5;
   for (std::size_t i = 0; i < x_.size(); ++i) {
-    flows_[i] = column_flow(i, p[i], dpdx_at(p, i, dx_), h[i]);
+    flows_[i] = column_flow(i, p[i], dpdx_[i], h[i]);
     if (eyring_stress_) wall_stress_[i] = flows_[i].eyring_wall_stress;
     const std::vector<double> Q = mass_flux_profile(flows_[i], h[i]);
     if (Q_[i].size() != Q.size()) {  // the first solve, or the first after interpolate_from

@@ -79,7 +79,11 @@ class FilmTemperature {
   /// of a sweep is below `tolerance` [K] or `max_sweeps`; returns the last change. The columns'
   /// flow (velocity, shear rate, mass flux) is that of the temperatures the solve starts from
   /// (.cpp: why).
-  double solve(const std::vector<double>& p, const std::vector<double>& h, double tolerance, int max_sweeps);
+  /// `poiseuille` is the pressure solve's Poiseuille coefficient (ρ/η) per node [s/m²]: where an
+  /// Eyring column's flow thins steeply with the gradient, the column flows at the gradient that
+  /// carries that solve's Poiseuille flux (flux_carrying_gradient).
+  double solve(const std::vector<double>& p, const std::vector<double>& h, const std::vector<double>& poiseuille,
+               double tolerance, int max_sweeps);
 
   /// Takes the temperatures (film, solids) and Eyring wall stresses of the same contact on the grid
   /// half as fine (nodes (n − 1)/2 + 1, same film and solid nodes, same depth): coinciding
@@ -93,6 +97,13 @@ class FilmTemperature {
     return column_flow(i, p[i], dpdx_at(p, i, dx_), h[i]);
   }
   [[nodiscard]] static double dpdx_at(const std::vector<double>& p, std::size_t i, double dx);
+  /// The ∂p/∂x at which column i flows in a temperature solve: dpdx, the pressure's own, except
+  /// in an Eyring column whose Poiseuille coefficient thins steeply with the gradient
+  /// (∂ln(ρ/η)_e/∂ln|∂p/∂x| > 1), where it is the gradient at which the column, at its current
+  /// temperatures, carries the Poiseuille flux (ρ/η)·h³·dpdx/12 of the pressure solve whose
+  /// coefficient is `poiseuille` (.cpp: why). Both agree where the coupling has converged.
+  [[nodiscard]] double flux_carrying_gradient(std::size_t i, double p, double dpdx, double h,
+                                              double poiseuille) const;
   [[nodiscard]] HeatBalance heat_balance(const std::vector<double>& p, const std::vector<double>& h) const;
 
   [[nodiscard]] double depth() const { return depth_; }
@@ -119,6 +130,7 @@ class FilmTemperature {
   std::vector<double> zeta_, s_;
   std::vector<std::vector<double>> T_;                 ///< film [i][j]
   std::array<std::vector<std::vector<double>>, 2> Ts_; ///< solids [body][i][k]
+  std::vector<double> dpdx_;                           ///< each column's ∂p/∂x in this solve() [Pa/m]
   std::vector<ColumnFlow> flows_;                      ///< each column's flow of this solve()
   std::vector<std::vector<double>> Q_;                 ///< Q(x_i, ζ_j) [kg/(m·s)], relaxed towards flows_' (solve)
   std::vector<double> wall_stress_;  ///< each column's Eyring root τ_a of the last solve() (NaN: none yet), a Newton start

@@ -215,7 +215,7 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
   }
 
   const double ls = problem.length_scale(), ps = problem.pressure_scale(), hs = problem.film_scale();
-  std::vector<double> x(n), p(n), h(n);
+  std::vector<double> x(n), p(n), h(n), poiseuille(n);
   for (std::size_t i = 0; i < n; ++i) x[i] = current.X[i] * ls;
   FilmTemperature field(x, data_.u1, data_.u2, problem.hertz_half_width(), rheology_, solids_, options_.film);
   if (nested) field.interpolate_from(*nested->field);
@@ -247,7 +247,10 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
     const double sweep_tolerance = r.temperature_change_history.empty()
                                        ? 1e-4
                                        : std::max(1e-4, sweep_fraction * r.temperature_change_history.back());
-    field.solve(p, h, sweep_tolerance, options_.sweeps_per_iteration);
+    // The pressure solve's Poiseuille coefficient: the frozen factor times the isothermal ρ/η.
+    for (std::size_t i = 0; i < n; ++i)
+      poiseuille[i] = state.flow_factor[i] * rheology_.density(p[i], T0) / rheology_.viscosity(p[i], T0);
+    field.solve(p, h, poiseuille, sweep_tolerance, options_.sweeps_per_iteration);
     // Generalized-Reynolds factors relative to the isothermal coefficients at the same p.
     bool finite = true;
     for (std::size_t i = 0; i < n; ++i) {
