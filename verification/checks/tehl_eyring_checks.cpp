@@ -198,8 +198,8 @@ const RegisterSection traction_curve_section(SectionSpec{
           c.mu[peak], curve_srr[peak], c.dT[peak], c.dT.back(), curve_srr.back(), curve_srr.front(), curve_srr.back())});
     }});
 
-// ---- the steel roller ------------------------------------------------------------
-struct Roller {
+// ---- cases/ points with an Eyring film: the steel roller, seed 004's near-rolling contact
+struct PointCase {
   LineContactData contact;
   model::ThermalLubricant lubricant;
   model::ThermalSolids solids;
@@ -207,10 +207,10 @@ struct Roller {
 };
 
 /// A tehl_point case file of cases/ with an Eyring film (its grid is the check's to choose).
-Roller eyring_point_case(const CheckContext& ctx, const std::string& file) {
+PointCase eyring_point_case(const CheckContext& ctx, const std::string& file) {
   const auto j = model::read_json_file(ctx.case_path(file));
   if (j.at("rheology") != "eyring") throw std::runtime_error(file + ": rheology is not \"eyring\"");
-  Roller r;
+  PointCase r;
   model::ObjectReader root(j, "");
   r.contact = testing_support::case_contact(root);
   r.lubricant = model::read_thermal_lubricant(root.object("lubricant"));
@@ -219,9 +219,9 @@ Roller eyring_point_case(const CheckContext& ctx, const std::string& file) {
   return r;
 }
 
-Roller roller_case(const CheckContext& ctx) { return eyring_point_case(ctx, "tehl_point_roller_eyring.json"); }
+PointCase roller_case(const CheckContext& ctx) { return eyring_point_case(ctx, "tehl_point_roller_eyring.json"); }
 
-ThermalEhlResult solve_roller(const Roller& c, lubricant::ShearRheology rheology, int nodes = 641,
+ThermalEhlResult solve_point(const PointCase& c, lubricant::ShearRheology rheology, int nodes = 641,
                               int max_iterations = ThermalEhlOptions{}.max_iterations) {
   const lubricant::ThermalRheology fluid(c.lubricant, c.inlet_temperature);
   ThermalEhlOptions o;
@@ -233,7 +233,7 @@ ThermalEhlResult solve_roller(const Roller& c, lubricant::ShearRheology rheology
 
 /// ISO/TR 15144-1 (80): the flash temperature of a Hertzian band heat source μ·p·v_g moving
 /// over both surfaces (Blok's equal-maximum partition), with the film's own μ.
-double iso_flash_temperature(const Roller& c, double mu) {
+double iso_flash_temperature(const PointCase& c, double mu) {
   const auto& k = c.contact;
   const double p_h = std::sqrt(k.load_per_length * k.reduced_modulus / (2.0 * std::acos(-1.0) * k.reduced_radius));
   const auto B = [&](int s) {
@@ -264,8 +264,8 @@ const RegisterCheck roller(CheckSpec{
     .tier = Tier::fast,
     .run = [](const CheckContext& ctx) {
       const auto c = roller_case(ctx);
-      const auto e = solve_roller(c, lubricant::ShearRheology::eyring);
-      const auto n = solve_roller(c, lubricant::ShearRheology::newtonian);
+      const auto e = solve_point(c, lubricant::ShearRheology::eyring);
+      const auto n = solve_point(c, lubricant::ShearRheology::newtonian);
       const double flash_e = iso_flash_temperature(c, e.friction_coefficient);
       const double flash_n = iso_flash_temperature(c, n.friction_coefficient);
       const auto figures = [](const ThermalEhlResult& r, double flash) {
@@ -354,40 +354,39 @@ const RegisterCheck film_order(CheckSpec{
       return grid_study({9, 17, 33}, [](int n) { return solve({.srr = 0.5, .nodes = 321, .film_nodes = n}); });
     }});
 
-const RegisterCheck roller_order(CheckSpec{
-    .id = "tehl.eyring.roller_fine_grids", .section = section, .solver = solver,
-    .reference = "its own finer grids along x (641, 1281, 2561 nodes, each nested on the one half as fine)",
-    .quantity = "of the observed orders of h_min and h_c the one farther from 2 of the issue's 1 MN/m roller "
-                "(cases/tehl_point_roller_eyring.json, τ0 5 MPa) on 641, 1281 and 2561 nodes",
-    .unit = "-", .tolerance = {0.5, 0},
-    .justification = order_justification + "; before the nested start the 1281- and 2561-node solves stopped with "
-                     "a non-finite temperature, and until the temperature sweeps held each column's flow "
-                     "(FilmTemperature::solve) the 2561-node solve needed 70–120 iterations, past the default cap "
-                     "of 60, which this check now holds (15, 19, 22 measured on 641, 1281, 2561 nodes)",
-    .tier = Tier::fast,
-    .run = [](const CheckContext& ctx) {
-      const auto c = roller_case(ctx);
-      return grid_study({641, 1281, 2561}, [&](int n) { return solve_roller(c, lubricant::ShearRheology::eyring, n); });
-    }});
+/// The observed order along x of an Eyring point of cases/ on 641, 1281 and 2561 nodes (each
+/// nested on the one half as fine); `contact` names it, `history` says what the check caught.
+CheckSpec eyring_fine_grids(std::string id, std::string file, const std::string& contact, const std::string& history) {
+  return CheckSpec{
+      .id = std::move(id), .section = section, .solver = solver,
+      .reference = "its own finer grids along x (641, 1281, 2561 nodes, each nested on the one half as fine)",
+      .quantity = "of the observed orders of h_min and h_c the one farther from 2 of " + contact +
+                  " on 641, 1281 and 2561 nodes",
+      .unit = "-", .tolerance = {0.5, 0}, .justification = order_justification + "; " + history,
+      .tier = Tier::fast,
+      .run = [file = std::move(file)](const CheckContext& ctx) {
+        const auto c = eyring_point_case(ctx, file);
+        return grid_study({641, 1281, 2561}, [&](int n) { return solve_point(c, lubricant::ShearRheology::eyring, n); });
+      }};
+}
 
-const RegisterCheck near_rolling_order(CheckSpec{
-    .id = "tehl.eyring.near_rolling_fine_grids", .section = section, .solver = solver,
-    .reference = "its own finer grids along x (641, 1281, 2561 nodes, each nested on the one half as fine)",
-    .quantity = "of the observed orders of h_min and h_c the one farther from 2 of seed 004's near-pure-rolling "
-                "contact (cases/tehl_point_seed004_near_rolling.json, M 15.9, L 18.8, τ0 5 MPa)",
-    .unit = "-", .tolerance = {0.5, 0},
-    .justification = order_justification + "; this contact's outlet spike thins the Eyring film steeply with the "
-                     "gradient (∂ln(ρ/η)_e/∂ln|∂p/∂x| 5–15), and until the temperature sweeps took there the "
-                     "gradient that carries the pressure solve's flux (FilmTemperature::flux_carrying_gradient) "
-                     "the 2561-node solve ran away to a non-finite temperature in 5 iterations; measured orders "
-                     "1.77 (h_min) and 1.98 (h_c) in 45/17/19 iterations on 641/1281/2561 nodes. Its largest "
-                     "temperature rise (1.8, 2.8, 3.7 K) has no order on these grids: it sits at the spike, whose "
-                     "heating each finer grid resolves further",
-    .tier = Tier::fast,
-    .run = [](const CheckContext& ctx) {
-      const auto c = eyring_point_case(ctx, "tehl_point_seed004_near_rolling.json");
-      return grid_study({641, 1281, 2561}, [&](int n) { return solve_roller(c, lubricant::ShearRheology::eyring, n); });
-    }});
+const RegisterCheck roller_order(eyring_fine_grids(
+    "tehl.eyring.roller_fine_grids", "tehl_point_roller_eyring.json",
+    "the issue's 1 MN/m roller (cases/tehl_point_roller_eyring.json, τ0 5 MPa)",
+    "before the nested start the 1281- and 2561-node solves stopped with a non-finite temperature, and until the "
+    "temperature sweeps held each column's flow (FilmTemperature::solve) the 2561-node solve needed 70–120 "
+    "iterations, past the default cap of 60, which this check now holds (15, 19, 22 measured on 641, 1281, 2561 "
+    "nodes)"));
+
+const RegisterCheck near_rolling_order(eyring_fine_grids(
+    "tehl.eyring.near_rolling_fine_grids", "tehl_point_seed004_near_rolling.json",
+    "seed 004's near-pure-rolling contact (cases/tehl_point_seed004_near_rolling.json, M 15.9, L 18.8, τ0 5 MPa)",
+    "this contact's outlet spike thins the Eyring film steeply with the gradient (∂ln(ρ/η)_e/∂ln|∂p/∂x| 5–15), "
+    "and until the temperature sweeps took there the gradient that carries the pressure solve's flux "
+    "(FilmTemperature::flux_carrying_gradient) the 2561-node solve ran away to a non-finite temperature in 5 "
+    "iterations; measured orders 1.77 (h_min) and 1.98 (h_c) in 45/17/19 iterations on 641/1281/2561 nodes. Its "
+    "largest temperature rise (1.8, 2.8, 3.7 K) has no order on these grids: it sits at the spike, whose heating "
+    "each finer grid resolves further"));
 
 }  // namespace
 }  // namespace gearbench::verification
