@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
+#include "ehl/film_temperature.h"
 #include "ehl/thermal_line_contact.h"
 #include "ehl/traction.h"
 #include "lubricant/rheology.h"
@@ -244,6 +246,32 @@ TEST(ThermalLineContact, EyringFilmLimitsTractionAndHeating) {
   EXPECT_FALSE(eyring.friction_coefficient_eyring.has_value());  // no post-processing of an Eyring film
   const lubricant::ThermalRheology no_stress(roelands_oil(), T0);
   EXPECT_THROW(ThermalLineContact(contact(2.5, 1.5), no_stress, steel(), o).solve(), InputError);
+}
+
+// A column at the outlet spike of a near-rolling Eyring film (0.9 GPa, 0.4 µm, |h·∂p/∂x| 20τ0)
+// thins steeply with the gradient, so a temperature sweep takes the gradient that carries the
+// pressure solve's Poiseuille flux (ρ/η)·h³·∂p/∂x/12: here a solve whose coefficient is e² of
+// the column's at its own gradient, i.e. a flux the column carries only at a steeper gradient.
+// Where the column barely thins (a gentle gradient, or a Newtonian film) the pressure's own
+// gradient stays.
+TEST(FilmTemperature, SteeplyThinningColumnTakesTheGradientThatCarriesTheFlux) {
+  const lubricant::ThermalRheology rheology(eyring_oil(), T0);
+  std::vector<double> x(5);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = (static_cast<double>(i) - 2.0) * 1e-6;
+  FilmTemperatureOptions o;
+  o.rheology = lubricant::ShearRheology::eyring;
+  const FilmTemperature field(x, 1.0, 1.0, 1e-4, rheology, steel(), o);
+  const double p = 0.9e9, h = 0.4e-6, g = -20.0 * 5e6 / h;
+  const double own = field.column_flow(2, p, g, h).rho_over_eta_e();
+  const double poiseuille = std::exp(2.0) * own;
+  const double carried = field.flux_carrying_gradient(2, p, g, h, poiseuille);
+  EXPECT_LT(carried, g);  // same sign, steeper
+  EXPECT_NEAR(field.column_flow(2, p, carried, h).rho_over_eta_e() * carried / (poiseuille * g), 1.0, 1e-9);
+  // A gentle gradient (h·|∂p/∂x| below τ0) and a Newtonian film keep the pressure's own.
+  EXPECT_EQ(field.flux_carrying_gradient(2, p, -0.5 * 5e6 / h, h, poiseuille), -0.5 * 5e6 / h);
+  FilmTemperatureOptions newtonian;
+  const FilmTemperature film(x, 1.0, 1.0, 1e-4, rheology, steel(), newtonian);
+  EXPECT_EQ(film.flux_carrying_gradient(2, p, g, h, poiseuille), g);
 }
 
 // Eyring traction from a solved film: τ0 → ∞ gives back the solver's Newtonian traction
