@@ -7,6 +7,7 @@
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_roots.h>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 #include "model/errors.h"
@@ -152,8 +153,9 @@ double FilmTemperature::flux_carrying_gradient(std::size_t i, double p, double d
   // session on every column: the Hertzian zone's Poiseuille flux is a tiny remainder that a
   // 1e-3 change of ρ* moves far).
   if (!eyring_stress_ || !(p > 0.0 && h > 0.0 && poiseuille > 0.0)) return dpdx;
-  // s ≤ 1 for a Poiseuille wall stress h·|∂p/∂x|/2 below τ0/2 (the Eyring thinning grows as
-  // sinh of it): no column flow needed to know it.
+  // Below a Poiseuille wall stress h·|∂p/∂x|/2 of τ0/2 no column flow is needed to know s ≪ 1:
+  // with a = h·|∂p/∂x|/(2τ0) an Eyring film's Poiseuille flux is 3∫ζ·sinh(aζ)dζ/a = 1 + a²/10 +
+  // O(a⁴) times the Newtonian one, so s ≈ a²/5, 0.05 at a = 1/2.
   if (h * std::abs(dpdx) <= *eyring_stress_ || dpdx == 0.0) return dpdx;
   // The column's thinning s = ∂ln(ρ/η)_e/∂ln|∂p/∂x| at the pressure's gradient.
   const double sign = dpdx < 0.0 ? -1.0 : 1.0, y0 = std::log(std::abs(dpdx));
@@ -194,17 +196,18 @@ double FilmTemperature::flux_carrying_gradient(std::size_t i, double p, double d
     far += direction;
   }
   model::gsl_use_status_codes();
-  gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-  model::gsl_check(gsl_root_fsolver_set(solver, &phi, std::min(near, far), std::max(near, far)),
+  const std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
+      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
+  model::gsl_check(gsl_root_fsolver_set(solver.get(), &phi, std::min(near, far), std::max(near, far)),
                    "flux_carrying_gradient: gsl_root_fsolver_set");
   double y = y0;
   int status = GSL_CONTINUE;
   for (int k = 0; k < 100 && status == GSL_CONTINUE; ++k) {
-    model::gsl_check(gsl_root_fsolver_iterate(solver), "flux_carrying_gradient: gsl_root_fsolver_iterate");
-    y = gsl_root_fsolver_root(solver);
-    status = gsl_root_test_interval(gsl_root_fsolver_x_lower(solver), gsl_root_fsolver_x_upper(solver), 1e-12, 0.0);
+    model::gsl_check(gsl_root_fsolver_iterate(solver.get()), "flux_carrying_gradient: gsl_root_fsolver_iterate");
+    y = gsl_root_fsolver_root(solver.get());
+    status = gsl_root_test_interval(gsl_root_fsolver_x_lower(solver.get()), gsl_root_fsolver_x_upper(solver.get()),
+                                    1e-12, 0.0);
   }
-  gsl_root_fsolver_free(solver);
   return sign * std::exp(y);
 }
 
