@@ -160,8 +160,8 @@ double FilmTemperature::flux_carrying_gradient(std::size_t i, double p, double d
   // The column's thinning s = ∂ln(ρ/η)_e/∂ln|∂p/∂x| at the pressure's gradient.
   const double sign = dpdx < 0.0 ? -1.0 : 1.0, y0 = std::log(std::abs(dpdx));
   constexpr double step = 1e-3;  // in ln|∂p/∂x|
-  const double s = std::log(column_flow(i, p, sign * std::exp(y0 + step), h).rho_over_eta_e() /
-                            column_flow(i, p, dpdx, h).rho_over_eta_e()) / step;
+  const double log_coefficient = std::log(column_flow(i, p, dpdx, h).rho_over_eta_e());
+  const double s = (std::log(column_flow(i, p, sign * std::exp(y0 + step), h).rho_over_eta_e()) - log_coefficient) / step;
   if (!(s > 1.0)) return dpdx;
   // φ(y) = ln[(ρ/η)_e(e^y)·e^y] − ln[(ρ/η)·|∂p/∂x|]: the column's Poiseuille flux against the
   // pressure solve's, in logarithms of y = ln|∂p/∂x|. The pressure solve's flux is set by its
@@ -183,7 +183,7 @@ double FilmTemperature::flux_carrying_gradient(std::size_t i, double p, double d
                    },
                    &flux};
   // Bracket the root by steps of e in |∂p/∂x| from the pressure's gradient, then Brent's method.
-  const double phi0 = GSL_FN_EVAL(&phi, y0);
+  const double phi0 = log_coefficient + y0 - flux.target;  // φ(y0), from the column flow above
   if (phi0 == 0.0) return dpdx;
   const double direction = phi0 > 0.0 ? -1.0 : 1.0;
   double near = y0, far = y0 + direction;
