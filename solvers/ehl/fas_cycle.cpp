@@ -11,7 +11,10 @@ namespace gearbench::ehl {
 void FasMultigrid::Impl::cycle(std::size_t k, CycleType type) {
   Level& fine = *levels_[k];
   if (k == 0) {
-    solve_coarsest(fine, coarsest_steps_per_visit, coarsest_tolerance, coarsest_visit_reduction);
+    if (o_.single_grid)
+      relax_single_grid(fine);
+    else
+      solve_coarsest(fine, coarsest_steps_per_visit, coarsest_tolerance, coarsest_visit_reduction);
     return;
   }
   for (int s = 0; s < o_.pre_sweeps; ++s) relax(fine);

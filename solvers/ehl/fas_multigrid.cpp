@@ -20,10 +20,16 @@ FasMultigrid::Impl::Impl(const LineContactProblem& problem, const EhlOptions& o,
   x_out_ = o_.x_in != 0.0 || o_.x_out != 0.0 ? o_.x_out : problem_.x_out();
   if (state_.has_fields() && o_.adaptive())
     throw std::invalid_argument("FasMultigrid: a contact state with fields needs a fixed grid (levels > 0)");
-  coarsest_ = coarsest_nodes();
-  int levels = o_.adaptive() ? 1 : o_.levels;
-  if (o_.nodes > 0) levels = levels_for_finest(static_cast<std::size_t>(o_.nodes));
-  for (int k = 0; k < levels; ++k) add_level();
+  if (o_.single_grid) {
+    if (o_.nodes <= 0) throw std::invalid_argument("EhlOptions::single_grid needs the grid's nodes");
+    coarsest_ = static_cast<std::size_t>(o_.nodes);
+    add_level();
+  } else {
+    coarsest_ = coarsest_nodes();
+    int levels = o_.adaptive() ? 1 : o_.levels;
+    if (o_.nodes > 0) levels = levels_for_finest(static_cast<std::size_t>(o_.nodes));
+    for (int k = 0; k < levels; ++k) add_level();
+  }
   inject_fields();
 }
 
@@ -33,6 +39,10 @@ EhlResult FasMultigrid::Impl::solve(const std::optional<WarmStart>& warm) {
   r.scheme = o_.describe();
   if (warm) {
     start_from(*warm);
+    iterate_to_residual(r);
+  } else if (o_.single_grid) {
+    make_finest(*levels_.back());
+    initial_guess(*levels_.back());
     iterate_to_residual(r);
   } else {
     full_multigrid(r);  // under the error rule, converges every level to it

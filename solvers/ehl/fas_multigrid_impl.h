@@ -262,6 +262,19 @@ class FasMultigrid::Impl {
   /// With a `base`, the sweep covers first … end − 1 only and updates the film and the
   /// coefficients in a window around it (update_film_window): the free boundary's sweeps.
   void relax(Level& l, std::size_t first = 1, std::size_t end = 0, const FilmBase* base = nullptr);
+  /// The single-grid baseline's cycle (EhlOptions::single_grid): one relaxation sweep, then
+  /// H0 += single_grid_h0_gain·(∫P dX − F), the force-balance relaxation of Venner & Lubrecht's
+  /// code (`relaxh0`, Multilevel Methods in Lubrication, 2000), which applies it on the coarsest
+  /// grid only.
+  void relax_single_grid(Level& l);
+  /// The gain of that H0 update in Hertzian units (F = π/2). Venner & Lubrecht's `hfact` is 0.1
+  /// with V-cycles (0.05 with W, a quarter of either above L = 10 or M = 1000) on a coarsest
+  /// grid; on a fine single grid, whose pressure answers H0 over hundreds of sweeps, 0.1 set H0
+  /// oscillating with a growing amplitude. Measured at (10, 0) on 257 nodes, sweeps until H_c
+  /// and H_min were within the multigrid's claimed accuracy (1.3e-3): 0.01 340, 0.005 340,
+  /// 0.002 370, 0.001 820; on 1025 nodes none of 0.01, 0.002, 3e-4 came within its 4.2e-5 in
+  /// 2000 sweeps (errors 17.6, 0.37, 0.30: H0 swinging with a period of ~2500 sweeps).
+  static constexpr double single_grid_h0_gain = 0.005;
 
   /// The scale-free relaxation switch: node i is relaxed by Gauss–Seidel where the Poiseuille
   /// diagonal (ε_{i−½} + ε_{i+½})/h² exceeds κ × the wedge term's own diagonal (the film's

@@ -72,6 +72,11 @@ void FasMultigrid::Impl::relax(Level& l, std::size_t first, std::size_t end, con
   l.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+void FasMultigrid::Impl::relax_single_grid(Level& l) {
+  relax(l);
+  H0_ += single_grid_h0_gain * (integral(l) - l.g);
+}
+
 bool FasMultigrid::Impl::poiseuille_dominates(const Level& l, const ReynoldsCoefficients& c, std::size_t i) const {
   ReynoldsCoefficients frozen = c;
   frozen.eps_face_dP_left = frozen.eps_face_dP_right = nullptr;

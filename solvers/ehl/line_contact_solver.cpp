@@ -17,9 +17,13 @@ std::string EhlOptions::describe() const {
   const std::string rule = stop == StopRule::discretisation_error
                                ? fmt::format("stop at {:g} of the error estimate", error_fraction)
                                : fmt::format("stop at residual {:.0e}", tolerance);
-  return fmt::format("FMG + {}({},{}), ω {:g}/{:g}, κ {:g}, lines ±{}, |Δ ln ε| ≤ {:g}, {}; {}",
-                     cycle == CycleType::W ? 'W' : cycle == CycleType::F ? 'F' : 'V', pre_sweeps, post_sweeps, omega_gauss_seidel, omega_jacobi,
-                     relaxation_switch, line_band, change_limit, grid, rule);
+  const std::string method =
+      single_grid ? std::string("single grid, a relaxation and an H0 update per cycle")
+                  : fmt::format("FMG + {}({},{})", cycle == CycleType::W ? 'W' : cycle == CycleType::F ? 'F' : 'V',
+                                pre_sweeps, post_sweeps);
+  return fmt::format("{}, ω {:g}/{:g}, κ {:g}, lines ±{}, |Δ ln ε| ≤ {:g}, {}{}; {}", method, omega_gauss_seidel,
+                     omega_jacobi, relaxation_switch, line_band, change_limit, grid,
+                     direct_deformation ? ", direct deformation sum" : "", rule);
 }
 
 std::string EhlResult::summary() const {

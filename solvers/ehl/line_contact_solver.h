@@ -88,6 +88,10 @@ struct EhlOptions {
   int free_boundary_window = 16;  ///<                                                  [1, 256]
   double x_in = 0.0, x_out = 0.0; ///< domain; both 0 picks the problem's default
   bool direct_deformation = false; ///< the O(n²) sum instead of the FFT (the benchmarks' baseline)
+  /// Relaxation on the finest grid alone, the benchmarks' single-grid baseline (issue 19): no
+  /// coarse grid and no local treatment; a cycle is one relaxation sweep followed by the force
+  /// balance's H0 update (single_grid_h0_gain). Needs `nodes`; stops by the residual rule.
+  bool single_grid = false;
 
   /// The "grid" keys (ranges, units, what an absent key means) and the ranges of the
   /// relaxation settings the C++ API alone sets.
