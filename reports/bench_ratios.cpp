@@ -43,8 +43,10 @@ nlohmann::json side_by_side_ratios(const nlohmann::json& benchmarks) {
   std::map<std::string, double> times;
   for (const auto& [name, s] : samples) times[name] = reports::median(s);
   std::map<std::string, double> unconverged;  // baseline run -> the residual it stopped at
+  // Repetitions only: an aggregate's counters are statistics (the standard deviation of
+  // converged = 1 is 0, which read as a run stopped unconverged).
   for (const auto& b : benchmarks)
-    if (stopped_unconverged(b))
+    if (b.value("run_type", "iteration") == "iteration" && stopped_unconverged(b))
       unconverged[b["run_name"].get<std::string>()] = b.value("residual", 0.0);
   const std::string suffix = "_baseline";
   nlohmann::json ratios = nlohmann::json::object();

@@ -266,6 +266,20 @@ TEST(BenchRatios, MarksAnUnconvergedBaseline) {
   EXPECT_DOUBLE_EQ(r["BM_S/4097"]["baseline_residual"].get<double>(), 0.012);
 }
 
+// A baseline that converged in every repetition is not a bound because of its aggregates: the
+// standard deviation of converged = 1 is 0 (a regression: BM_EhlMultigridVsSingleGrid/257 read
+// "< 0.07 x baseline" with --repetitions 3).
+TEST(BenchRatios, AggregatesDoNotMarkAConvergedBaseline) {
+  const auto runs = nlohmann::json::parse(R"([
+    {"run_name": "BM_S/257", "run_type": "iteration", "real_time": 1.0, "time_unit": "ms"},
+    {"run_name": "BM_S_baseline/257", "run_type": "iteration", "real_time": 20.0, "time_unit": "ms", "converged": 1},
+    {"run_name": "BM_S_baseline/257", "run_type": "aggregate", "aggregate_name": "stddev", "real_time": 0.1,
+     "time_unit": "ms", "converged": 0}])");
+  const auto r = gearbench::reports::side_by_side_ratios(runs);
+  EXPECT_DOUBLE_EQ(r["BM_S/257"]["ratio"].get<double>(), 0.05);
+  EXPECT_FALSE(r["BM_S/257"].contains("baseline_converged"));
+}
+
 // The scaling fit recovers the exponent of time ∝ nodes^p across time units, ignores
 // families without a nodes counter or with fewer than three sizes.
 TEST(BenchScaling, FitsTheExponentOfTimeAgainstNodes) {
