@@ -270,15 +270,20 @@ TEST(FasMultigrid, LevelsBelowTheFinestStopOnTheirFullMultigridCycleWhereItMeets
   EXPECT_GE(std::count(below.begin(), below.end(), 0), 3);
 }
 
+/// A fixed grid of `nodes` solved to a scaled residual of 1e-10: its discrete solution.
+EhlOptions to_discrete_solution(int nodes) {
+  EhlOptions o;
+  o.nodes = nodes;
+  o.stop = StopRule::residual;
+  o.tolerance = 1e-10;
+  return o;
+}
+
 // A converged solution, given back as the start, must come back unchanged.
 TEST(FasMultigrid, WarmStartFromTheSolutionStays) {
   const LineContactProblem p(LineContactData::from_moes(20.0, 10.0));
-  EhlOptions o;
-  o.nodes = 321;
-  o.stop = StopRule::residual;
-  o.tolerance = 1e-10;
-  FasMultigrid first(p, o, ContactState{});
-  const auto s = first.solve();
+  const EhlOptions o = to_discrete_solution(321);
+  const auto s = FasMultigrid(p, o, ContactState{}).solve();
   ASSERT_TRUE(s.converged);
   const auto again = FasMultigrid(p, o, ContactState{}).solve(WarmStart{s.P, s.H0});
   ASSERT_TRUE(again.converged);
@@ -295,10 +300,7 @@ TEST(FasMultigrid, WarmStartFromTheSolutionStays) {
 // its deformation is not the multigrid's.
 TEST(FasMultigrid, SingleGridBaselineSolvesTheSameDiscreteProblem) {
   const LineContactProblem p(LineContactData::from_moes(10.0, 0.0));
-  EhlOptions o;
-  o.nodes = 257;
-  o.stop = StopRule::residual;
-  o.tolerance = 1e-10;
+  EhlOptions o = to_discrete_solution(257);
   const auto s = LineContactSolver(p, o).solve();
   o.single_grid = o.direct_deformation = true;
   o.tolerance = 1e-15;  // its residual stalls near 2e-3 (the inlet's nodes): the sweeps are counted
