@@ -137,8 +137,9 @@ struct SingleGridSetup {
   EhlResult discrete;
 };
 
-/// Sweeps of the single-grid baseline between two checks of its films, and its cap (about 100×
-/// the multigrid's time on 1025 and 4097 nodes on this machine: a bound, not a convergence).
+/// Sweeps of the single-grid baseline between two checks of its films, and its cap: at the cap
+/// it had taken 118× (1025 nodes) and 226× (4097 nodes) the multigrid's time on this machine,
+/// its films still 6.0 and 2.8 off (docs/ehl-model.md, "Against a single grid").
 constexpr int single_grid_chunk = 10;
 int single_grid_cap(int nodes) { return nodes <= 257 ? 20000 : nodes <= 1025 ? 1000 : 300; }
 
