@@ -116,7 +116,9 @@ BENCHMARK(BM_EhlSteadySolve_baseline)->Arg(257)->Arg(513)->Arg(1025)->Unit(bench
 /// solution (the multigrid to a scaled residual of 1e-10, computed once, outside the timing).
 /// The single grid runs in chunks of sweeps, each from the last chunk's P and H0, until its
 /// films are that close or it reaches a cap of sweeps; stopped at the cap it reports
-/// converged = 0 and the side-by-side ratio is a bound.
+/// converged = 0 and the side-by-side ratio is a bound. The multigrid side times the same solve
+/// as BM_EhlSteadySolve/n in a family of its own: a family pairs with one baseline, and
+/// BM_EhlSteadySolve's is the Newton reference.
 struct SingleGridSetup {
   explicit SingleGridSetup(int n) : problem(LineContactData::from_moes(10.0, 0.0)), nodes(n) {
     EhlOptions o;

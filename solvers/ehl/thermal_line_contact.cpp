@@ -215,7 +215,7 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
   }
 
   const double ls = problem.length_scale(), ps = problem.pressure_scale(), hs = problem.film_scale();
-  std::vector<double> x(n), p(n), h(n), poiseuille(n);
+  std::vector<double> x(n), p(n), h(n), rho_iso(n), eta_iso(n), poiseuille(n);
   for (std::size_t i = 0; i < n; ++i) x[i] = current.X[i] * ls;
   FilmTemperature field(x, data_.u1, data_.u2, problem.hertz_half_width(), rheology_, solids_, options_.film);
   if (nested) field.interpolate_from(*nested->field);
@@ -247,17 +247,20 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
     const double sweep_tolerance = r.temperature_change_history.empty()
                                        ? 1e-4
                                        : std::max(1e-4, sweep_fraction * r.temperature_change_history.back());
-    // The pressure solve's Poiseuille coefficient: the frozen factor times the isothermal ρ/η.
-    for (std::size_t i = 0; i < n; ++i)
-      poiseuille[i] = state.flow_factor[i] * rheology_.density(p[i], T0) / rheology_.viscosity(p[i], T0);
+    // The isothermal coefficients at this pressure; the pressure solve's Poiseuille coefficient
+    // is the frozen factor times their ρ/η.
+    for (std::size_t i = 0; i < n; ++i) {
+      rho_iso[i] = rheology_.density(p[i], T0);
+      eta_iso[i] = rheology_.viscosity(p[i], T0);
+      poiseuille[i] = state.flow_factor[i] * rho_iso[i] / eta_iso[i];
+    }
     field.solve(p, h, poiseuille, sweep_tolerance, options_.sweeps_per_iteration);
     // Generalized-Reynolds factors relative to the isothermal coefficients at the same p.
     bool finite = true;
     for (std::size_t i = 0; i < n; ++i) {
       const ColumnFlow flow = field.column_flow(i, p, h);
-      const double rho_iso = rheology_.density(p[i], T0), eta_iso = rheology_.viscosity(p[i], T0);
-      log_image[i] = std::log(flow.rho_over_eta_e() * eta_iso / rho_iso);
-      log_image[n + i] = std::log(flow.rho_star(data_.u1, data_.u2) / rho_iso);
+      log_image[i] = std::log(flow.rho_over_eta_e() * eta_iso[i] / rho_iso[i]);
+      log_image[n + i] = std::log(flow.rho_star(data_.u1, data_.u2) / rho_iso[i]);
       finite = finite && std::isfinite(log_image[i]) && std::isfinite(log_image[n + i]);
     }
     if (!finite) break;  // a diverged temperature field: not converged
