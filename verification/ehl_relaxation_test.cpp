@@ -30,6 +30,25 @@ TEST(ReynoldsStencil, SecondOrderUpwindWedgeFirstOrderAtTheFirstNode) {
   EXPECT_DOUBLE_EQ(w[0] * 25.0 + w[1] * 16.0 + w[2] * 9.0, 10.0);
 }
 
+// The circulant is padded to the first 7-smooth size ≥ 2n − 2 (deformation.cpp): at exactly
+// 2n − 2 (n = 2^k + 1) the lags ±(n − 1) share one index, so the end nodes' loads, which reach
+// the far end, are what would show a wrong embedding. Fails if the padding were below 2n − 2 or
+// the embedding put K_{n−1} anywhere else.
+TEST(Deformation, SmoothPaddingKeepsTheLinearConvolutionAtBothEnds) {
+  for (const std::size_t n : {2, 3, 17, 100, 129, 641, 1025}) {
+    const Deformation d(n, 1.0 / static_cast<double>(n));
+    std::vector<double> P(n, 0.0), fft, direct;
+    P.front() = 1.0;
+    P.back() = -2.0;
+    if (n > 2) P[n / 2] = 0.5;
+    d.apply(P, fft);
+    d.apply_direct(P, direct);
+    double scale = 0.0;
+    for (const double w : direct) scale = std::max(scale, std::abs(w));
+    for (std::size_t i = 0; i < n; ++i) EXPECT_NEAR(fft[i], direct[i], 1e-12 * scale) << "n " << n << ", node " << i;
+  }
+}
+
 // Deformations of one size share the process's FFTW plans (deformation.cpp, plans_for) and
 // run them on their own buffers: interleaved, each must still give its own direct sum. Fails
 // if a plan ran on the arrays it was made with, or if one object's kernel leaked into another.

@@ -3,8 +3,8 @@
 //   W_i = Σ_j K_{|i−j|}·P_j,   K_k = ∫ ln|X_i − X'| dX' over cell j of width h (P constant
 //   per cell), i.e. K_k = (a + h/2)(ln|a + h/2| − 1) − (a − h/2)(ln|a − h/2| − 1), a = k·h.
 // The film uses H = H0 + X²/2 − (D/π)·W. K is Toeplitz, so W is a linear convolution:
-// evaluated by FFTW with zero padding to 2n (Liu, Wang & Liu, Wear 243, 2000: DC-FFT), in
-// O(n log n), or by the direct O(n²) sum that serves as its baseline.
+// evaluated by FFTW with zero padding to the first 7-smooth size ≥ 2n − 2 (Liu, Wang & Liu,
+// Wear 243, 2000: DC-FFT), in O(n log n), or by the direct O(n²) sum that serves as its baseline.
 #include <fftw3.h>
 
 #include <complex>
