@@ -42,12 +42,12 @@ nlohmann::json side_by_side_ratios(const nlohmann::json& benchmarks) {
       samples[b["run_name"].get<std::string>()].push_back(real_seconds(b));
   std::map<std::string, double> times;
   for (const auto& [name, s] : samples) times[name] = reports::median(s);
-  std::map<std::string, double> unconverged;  // baseline run -> the residual it stopped at
+  std::map<std::string, nlohmann::json> unconverged;  // baseline run -> a repetition that stopped unconverged
   // Repetitions only: an aggregate's counters are statistics (the standard deviation of
   // converged = 1 is 0, which read as a run stopped unconverged).
   for (const auto& b : benchmarks)
     if (b.value("run_type", "iteration") == "iteration" && stopped_unconverged(b))
-      unconverged[b["run_name"].get<std::string>()] = b.value("residual", 0.0);
+      unconverged[b["run_name"].get<std::string>()] = b;
   const std::string suffix = "_baseline";
   nlohmann::json ratios = nlohmann::json::object();
   for (const auto& [name, time] : times) {
@@ -60,8 +60,12 @@ nlohmann::json side_by_side_ratios(const nlohmann::json& benchmarks) {
       ratios[name] = {{"baseline", baseline}, {"solver_time", time}, {"baseline_time", it->second},
                       {"ratio", time / it->second}};
       if (const auto u = unconverged.find(baseline); u != unconverged.end()) {
+        // Where it stopped: its residual, and where the pair is timed to an accuracy (counters
+        // error and accuracy) the error it had reached, which says more than a residual.
         ratios[name]["baseline_converged"] = false;
-        ratios[name]["baseline_residual"] = u->second;
+        ratios[name]["baseline_residual"] = u->second.value("residual", 0.0);
+        for (const char* key : {"error", "accuracy"})
+          if (u->second.contains(key) && u->second[key].is_number()) ratios[name][std::string("baseline_") + key] = u->second[key];
       }
       break;
     }

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "bench_ratios.h"
+#include "bench_section.h"
 #include "support/perf_support.h"
 #include "mann_whitney.h"
 #include "model/errors.h"
@@ -264,6 +265,29 @@ TEST(BenchRatios, MarksAnUnconvergedBaseline) {
   EXPECT_DOUBLE_EQ(r["BM_S/4097"]["ratio"].get<double>(), 0.01);
   EXPECT_FALSE(r["BM_S/4097"]["baseline_converged"].get<bool>());
   EXPECT_DOUBLE_EQ(r["BM_S/4097"]["baseline_residual"].get<double>(), 0.012);
+}
+
+// A baseline timed to an accuracy (the single-grid pair's counters error and accuracy) keeps
+// both beside its residual, and the report's table prints the bound with its error, the figure
+// that says how far it got (its residual, 0.21 at the cap, said nothing of its films' 6.0).
+TEST(BenchRatios, AnUnconvergedBaselineKeepsItsErrorAndTheAccuracyAsked) {
+  const auto runs = nlohmann::json::parse(R"([
+    {"name": "BM_S/1025", "run_name": "BM_S/1025", "run_type": "iteration", "real_time": 0.01, "time_unit": "s"},
+    {"name": "BM_S_baseline/1025", "run_name": "BM_S_baseline/1025", "run_type": "iteration", "real_time": 1.2,
+     "time_unit": "s", "converged": 0, "residual": 0.21, "error": 6.0, "accuracy": 4.2e-5}])");
+  const auto r = gearbench::reports::side_by_side_ratios(runs);
+  EXPECT_DOUBLE_EQ(r["BM_S/1025"]["baseline_error"].get<double>(), 6.0);
+  EXPECT_DOUBLE_EQ(r["BM_S/1025"]["baseline_accuracy"].get<double>(), 4.2e-5);
+  EXPECT_DOUBLE_EQ(r["BM_S/1025"]["baseline_residual"].get<double>(), 0.21);
+  const nlohmann::json record = {
+      {"benchmarks", runs},
+      {"ratios", r},
+      {"gearbench",
+       {{"code", {{"git_sha", "abc"}}}, {"machine", {{"cpu_model", "cpu"}, {"cores", 2}}}, {"build", {{"build_type", "Release"}}}}}};
+  const std::string text = gearbench::reports::benchmark_note(record).text;
+  EXPECT_NE(text.find("< 0.00833 (the baseline stopped unconverged, its error 6 against the 4.2e-05 asked)"),
+            std::string::npos)
+      << text;
 }
 
 // A baseline that converged in every repetition is not a bound because of its aggregates: the
