@@ -4,6 +4,7 @@
 #include "fas_multigrid_impl.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 
@@ -39,7 +40,9 @@ void FasMultigrid::Impl::relax(Level& l, std::size_t first, std::size_t end, con
   for (std::size_t i = first; i < end; ++i) {
     if (poiseuille_dominates(l, c, i)) continue;
     const double r = l.f[i] - operator_at(l, i);
-    const double derivative = c.jacobian(i, i) - 0.5 * (c.jacobian(i, i - 1) + c.jacobian(i, i + 1));
+    std::array<double, 3> J{};  // ∂L_i/∂P_{i−1}, ∂L_i/∂P_i, ∂L_i/∂P_{i+1}
+    c.jacobian_row(i, i - 1, i + 1, J.data());
+    const double derivative = J[1] - 0.5 * (J[0] + J[2]);
     if (stays_at_zero(l, i, r, derivative)) continue;
     jacobi_change[i - first] = limit_change(l, i, o_.omega_jacobi * r / derivative);
     jacobi_residual[i - first] = r;
@@ -89,7 +92,6 @@ void FasMultigrid::Impl::solve_jacobi_lines(const Level& l, const ReynoldsCoeffi
                                             const std::vector<char>& is_jacobi, const std::vector<double>& residual,
                                             std::vector<double>& change) const {
   const auto band = static_cast<std::size_t>(o_.line_band);
-  const auto J = [&](std::size_t k, std::size_t j) { return (j == 0 || j + 1 >= l.n) ? 0.0 : c.jacobian(k, j); };
   const std::size_t end = first + is_jacobi.size();
   std::vector<double> band_storage, d, row;  // row: J(k, q) for q = lo − 1 … hi + 1, each evaluated once
   std::vector<int> pivots;
@@ -106,7 +108,9 @@ void FasMultigrid::Impl::solve_jacobi_lines(const Level& l, const ReynoldsCoeffi
     for (std::size_t k = a; k <= b; ++k) {
       const std::size_t lo = k >= a + band ? k - band : a, hi = std::min(b, k + band);
       row.resize(hi - lo + 3);
-      for (std::size_t q = lo - 1; q <= hi + 1; ++q) row[q + 1 - lo] = J(k, q);
+      c.jacobian_row(k, lo - 1, hi + 1, row.data());
+      if (lo == 1) row.front() = 0.0;  // the boundary nodes P_0 and P_{n−1} do not move
+      if (hi + 2 == l.n) row.back() = 0.0;
       for (std::size_t q = lo; q <= hi; ++q) {
         const auto r = static_cast<std::ptrdiff_t>(k - a), col = static_cast<std::ptrdiff_t>(q - a);
         band_storage[static_cast<std::size_t>(kl + ku + r - col + col * ldab)] =

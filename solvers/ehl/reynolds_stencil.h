@@ -55,6 +55,9 @@ struct ReynoldsCoefficients {
   /// response through the kernel in the wedge and squeeze terms,
   ///   Σ_m film_derivative(i)_m·(−(D/π)K_|i−m−j|) + local_jacobian(i, j).
   [[nodiscard]] double jacobian(std::size_t i, std::size_t j) const;
+  /// jacobian(i, j) for j = first … last into out[j − first], the film's derivative at i taken
+  /// once for the row (a Jacobi line's row reads nine entries).
+  void jacobian_row(std::size_t i, std::size_t first, std::size_t last, double* out) const;
   /// ∂L_i/∂H_{i−m}, m = 0, 1, 2, at frozen ε and ρ̄: the wedge (and squeeze) terms' response
   /// to the film, which a pressure change reaches through the kernel.
   [[nodiscard]] std::array<double, 3> film_derivative(std::size_t i) const;
