@@ -92,9 +92,11 @@ Deformation::Deformation(std::size_t nodes, double h)
   for (std::size_t k = 0; k < n_; ++k) real_buffer_[k] = kernel_[k];
   for (std::size_t k = 1; k < n_; ++k) real_buffer_[padded_ - k] = kernel_[k];
   fftw_execute_dft_r2c(forward_, real_buffer_, complex_buffer_);
+  // c is real and even (c_k = c_{m−k}), so its transform is real: the imaginary parts are
+  // rounding. FFTW's transforms are unnormalised; the 1/m of the inverse is taken here, once.
   kernel_hat_.resize(padded_ / 2 + 1);
-  for (std::size_t i = 0; i < kernel_hat_.size(); ++i)
-    kernel_hat_[i] = {complex_buffer_[i][0], complex_buffer_[i][1]};
+  const double scale = 1.0 / static_cast<double>(padded_);
+  for (std::size_t i = 0; i < kernel_hat_.size(); ++i) kernel_hat_[i] = complex_buffer_[i][0] * scale;
 }
 
 Deformation::~Deformation() {
@@ -103,18 +105,15 @@ Deformation::~Deformation() {
 }
 
 void Deformation::apply(const std::vector<double>& P, std::vector<double>& W) const {
-  for (std::size_t i = 0; i < padded_; ++i) real_buffer_[i] = i < n_ ? P[i] : 0.0;
+  std::copy(P.begin(), P.begin() + static_cast<std::ptrdiff_t>(n_), real_buffer_);
+  std::fill(real_buffer_ + n_, real_buffer_ + padded_, 0.0);
   fftw_execute_dft_r2c(forward_, real_buffer_, complex_buffer_);
   for (std::size_t i = 0; i < kernel_hat_.size(); ++i) {
-    const std::complex<double> product =
-        std::complex<double>(complex_buffer_[i][0], complex_buffer_[i][1]) * kernel_hat_[i];
-    complex_buffer_[i][0] = product.real();
-    complex_buffer_[i][1] = product.imag();
+    complex_buffer_[i][0] *= kernel_hat_[i];
+    complex_buffer_[i][1] *= kernel_hat_[i];
   }
   fftw_execute_dft_c2r(backward_, complex_buffer_, real_buffer_);
-  W.resize(n_);
-  const double scale = 1.0 / static_cast<double>(padded_);  // FFTW's transforms are unnormalised
-  for (std::size_t i = 0; i < n_; ++i) W[i] = real_buffer_[i] * scale;
+  W.assign(real_buffer_, real_buffer_ + n_);
 }
 
 void Deformation::apply_direct(const std::vector<double>& P, std::vector<double>& W) const {

@@ -7,7 +7,6 @@
 // Wear 243, 2000: DC-FFT), in O(n log n), or by the direct O(n²) sum that serves as its baseline.
 #include <fftw3.h>
 
-#include <complex>
 #include <memory>
 #include <vector>
 
@@ -34,7 +33,7 @@ class Deformation {
   std::size_t n_;
   std::size_t padded_;
   std::vector<double> kernel_;
-  std::vector<std::complex<double>> kernel_hat_;
+  std::vector<double> kernel_hat_;  ///< the circulant's transform (real: c is even), over m
   // FFTW buffers (mutable: execution writes them) and the process's plans of this size
   // (deformation.cpp, plans_for: shared, destroyed at exit).
   double* real_buffer_ = nullptr;
