@@ -5,20 +5,20 @@
 namespace gearbench::ehl {
 
 double ReynoldsCoefficients::jacobian(std::size_t i, std::size_t j) const {
-  double value = 0.0;
-  jacobian_row(i, j, j, &value);
-  return value;
+  return film_response(film_derivative(i), i, j) + local_jacobian(i, j);
 }
 
 void ReynoldsCoefficients::jacobian_row(std::size_t i, std::size_t first, std::size_t last, double* out) const {
-  // Wedge and squeeze: −υ·Σ_m w_m ρ̄_{i−m} δH_{i−m}/h − ρ̄_i δH_i/ΔT with δH_k = −(D/π)K_|k−j| δP_j.
   const auto dL_dH = film_derivative(i);
-  for (std::size_t j = first; j <= last; ++j) {
-    double value = 0.0;
-    for (std::size_t m = 0; m < 3 && m <= i; ++m)
-      if (dL_dH[m] != 0.0) value -= film_factor * dL_dH[m] * deformation.kernel(i - m > j ? i - m - j : j - (i - m));
-    out[j - first] = value + local_jacobian(i, j);
-  }
+  for (std::size_t j = first; j <= last; ++j) out[j - first] = film_response(dL_dH, i, j) + local_jacobian(i, j);
+}
+
+double ReynoldsCoefficients::film_response(const std::array<double, 3>& dL_dH, std::size_t i, std::size_t j) const {
+  // Wedge and squeeze: −υ·Σ_m w_m ρ̄_{i−m} δH_{i−m}/h − ρ̄_i δH_i/ΔT with δH_k = −(D/π)K_|k−j| δP_j.
+  double value = 0.0;
+  for (std::size_t m = 0; m < 3 && m <= i; ++m)
+    if (dL_dH[m] != 0.0) value -= film_factor * dL_dH[m] * deformation.kernel(i - m > j ? i - m - j : j - (i - m));
+  return value;
 }
 
 std::array<double, 3> ReynoldsCoefficients::film_derivative(std::size_t i) const {

@@ -67,6 +67,10 @@ struct ReynoldsCoefficients {
   /// ∂L_i/∂H0 at frozen ε: the wedge and squeeze terms of a uniform film shift (zero in the
   /// wedge of an incompressible film, whose flux difference does not see H0).
   [[nodiscard]] double h0_derivative(std::size_t i) const;
+
+ private:
+  /// Σ_m dL_dH[m]·(−(D/π)K_|i−m−j|): the part of ∂L_i/∂P_j that passes through the film.
+  [[nodiscard]] double film_response(const std::array<double, 3>& dL_dH, std::size_t i, std::size_t j) const;
 };
 
 }  // namespace gearbench::ehl
