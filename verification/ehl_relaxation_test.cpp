@@ -107,6 +107,37 @@ TEST(ReynoldsStencil, JacobianHoldsThePoiseuilleStencilAndTheFilmResponse) {
                                                       w[2] * g.deformation.kernel(3)) / g.h, 1e-12);
 }
 
+// A Jacobi line assembles its rows with jacobian_row (the film's derivative taken once a row):
+// each entry must be jacobian(i, j)'s, at the first interior node (first-order wedge) and
+// inside, with ρ̄'s and ε's responses on. Fails if the row put an entry at the wrong column or
+// took the film's derivative of another node.
+TEST(ReynoldsStencil, JacobianRowIsTheRowOfJacobianEntries) {
+  Grid g;
+  for (std::size_t k = 0; k < g.rho.size(); ++k) g.rho[k] = 1.0 + 0.05 * static_cast<double>(k);
+  auto c = g.coefficients();
+  std::vector<double> rho_dP(g.rho.size()), H(g.rho.size()), P(g.rho.size()), left(g.eps_face.size()), right(g.eps_face.size());
+  for (std::size_t k = 0; k < rho_dP.size(); ++k) {
+    rho_dP[k] = 0.01 * static_cast<double>(k % 3);
+    H[k] = 0.4 + 0.02 * static_cast<double>(k);
+    P[k] = 0.5 + 0.1 * static_cast<double>(k % 4);
+  }
+  for (std::size_t k = 0; k < left.size(); ++k) {
+    left[k] = -0.03 * static_cast<double>(k % 2);
+    right[k] = -0.02 * static_cast<double>(k % 3);
+  }
+  c.rho_dP = &rho_dP;
+  c.H = &H;
+  c.P = &P;
+  c.eps_face_dP_left = &left;
+  c.eps_face_dP_right = &right;
+  for (const std::size_t i : {std::size_t{1}, std::size_t{5}}) {
+    const std::size_t first = i > 4 ? i - 4 : 0, last = std::min(i + 3, Grid::n - 1);
+    std::vector<double> row(last - first + 1);
+    c.jacobian_row(i, first, last, row.data());
+    for (std::size_t j = first; j <= last; ++j) EXPECT_EQ(row[j - first], c.jacobian(i, j)) << "row " << i << ", column " << j;
+  }
+}
+
 // The Newton matrix of the spike's window and, bordered by H0 and the force balance, of the
 // coarsest grid, applied without being formed (kernel_jacobian.h): its entries are the Reynolds
 // Jacobian's (the film part through the kernel plus the local band), its product is that
