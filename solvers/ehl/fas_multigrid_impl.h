@@ -286,7 +286,8 @@ class FasMultigrid::Impl {
   /// the Jacobian of the distributed change (−½, 1, −½), by sparse LU (Venner & Lubrecht's
   /// line relaxation in one dimension, their init_line/solve_line). Point distributive Jacobi
   /// leaves complex modes of |λ| ≈ 0.6 in the contact, the line removes them (eighth session).
-  /// Where a run's LU fails or its change is not finite, the point changes stay.
+  /// Where a run's LU fails or its change is not finite, the point changes stay. `change`
+  /// returns the amplitudes, not yet limited (add_distributed_changes limits P's change).
   /// Nodes that stay at zero (stays_at_zero) are in no line: a cavitated node's residual is
   /// its complementarity slack, not an error, and solved with the line its (clipped) change
   /// skews its pressurised neighbours' (twelfth session: (200, 0) on 1025 nodes stalled at a
@@ -295,6 +296,16 @@ class FasMultigrid::Impl {
   void solve_jacobi_lines(const Level& l, const ReynoldsCoefficients& c, std::size_t first,
                           const std::vector<char>& is_jacobi, const std::vector<double>& residual,
                           std::vector<double>& change) const;
+
+  /// Adds the Jacobi lines' changes: amplitude δ_i (entry i − first) at node i and −δ_i/2 at
+  /// i ± 1 (not on a boundary node nor on one the coarse grid holds at zero), then each node's
+  /// total change of P limited (limit_change). The limit is on the change of P, not on the
+  /// amplitudes: where Poiseuille outweighs the wedge, the line's distributed Jacobian is
+  /// nearly a fourth difference, whose solution has large smooth amplitudes that the pattern
+  /// cancels to a small change of P. Clipping the amplitudes node by node broke that
+  /// cancellation into a sawtooth: (100, 10) on 4097 nodes stalled under the residual rule,
+  /// and converges in 9 cycles with the limit on P (twenty-seventh session, docs/ehl-model.md).
+  void add_distributed_changes(Level& l, std::size_t first, const std::vector<double>& amplitude) const;
 
   /// Node i stays at zero in a sweep: held by the coarse grid's truncation, or cavitated
   /// with a residual r_i of the sign that keeps it there (r_i/∂L_i/∂P_i ≤ 0, the rule of the

@@ -44,18 +44,12 @@ void FasMultigrid::Impl::relax(Level& l, std::size_t first, std::size_t end, con
     c.jacobian_row(i, i - 1, i + 1, J.data());
     const double derivative = J[1] - 0.5 * (J[0] + J[2]);
     if (stays_at_zero(l, i, r, derivative)) continue;
-    jacobi_change[i - first] = limit_change(l, i, o_.omega_jacobi * r / derivative);
+    jacobi_change[i - first] = o_.omega_jacobi * r / derivative;
     jacobi_residual[i - first] = r;
     is_jacobi[i - first] = 1;
   }
   solve_jacobi_lines(l, c, first, is_jacobi, jacobi_residual, jacobi_change);
-  for (std::size_t i = first; i < end; ++i) {
-    const double change = jacobi_change[i - first];
-    if (change == 0.0) continue;
-    l.P[i] += change;
-    if (i > 1 && !l.cavitated_on_finer[i - 1]) l.P[i - 1] -= 0.5 * change;
-    if (i + 2 < l.n && !l.cavitated_on_finer[i + 1]) l.P[i + 1] -= 0.5 * change;
-  }
+  add_distributed_changes(l, first, jacobi_change);
   // P ≥ 0 where the changes reached, first − 1 … end: the whole grid for a whole-grid sweep, so
   // that an interpolated start's negative pressures are removed.
   for (std::size_t i = first - 1; i <= end; ++i) l.P[i] = std::max(l.P[i], 0.0);
@@ -123,9 +117,26 @@ void FasMultigrid::Impl::solve_jacobi_lines(const Level& l, const ReynoldsCoeffi
     int info = 0;
     dgbsv_(&n, &kl, &ku, &nrhs, band_storage.data(), &ldab, pivots.data(), d.data(), &n, &info);
     if (info == 0 && std::all_of(d.begin(), d.end(), [](double v) { return std::isfinite(v); }))
-      for (std::size_t k = a; k <= b; ++k) change[k - first] = limit_change(l, k, o_.omega_jacobi * d[k - a]);
+      for (std::size_t k = a; k <= b; ++k) change[k - first] = o_.omega_jacobi * d[k - a];
     i = b + 1;
   }
+}
+
+void FasMultigrid::Impl::add_distributed_changes(Level& l, std::size_t first,
+                                                 const std::vector<double>& amplitude) const {
+  // change[k]: the change of P at node first − 1 + k, over the nodes first − 1 … end the
+  // distribution reaches.
+  std::vector<double> change(amplitude.size() + 2, 0.0);
+  for (std::size_t k = 0; k < amplitude.size(); ++k) {
+    const double a = amplitude[k];
+    if (a == 0.0) continue;
+    const std::size_t i = first + k;
+    change[k + 1] += a;
+    if (i > 1 && !l.cavitated_on_finer[i - 1]) change[k] -= 0.5 * a;
+    if (i + 2 < l.n && !l.cavitated_on_finer[i + 1]) change[k + 2] -= 0.5 * a;
+  }
+  for (std::size_t k = 0; k < change.size(); ++k)
+    if (change[k] != 0.0) l.P[first + k - 1] += limit_change(l, first + k - 1, change[k]);
 }
 
 bool FasMultigrid::Impl::stays_at_zero(const Level& l, std::size_t i, double r, double derivative) {
