@@ -46,6 +46,9 @@ model::OptionTable<EhlOptions> make_tuning_table() {
             {.description = "extra sweeps over the outlet window after each cycle"});
   t.integer("free_boundary_window", &EhlOptions::free_boundary_window, 1, 256,
             {.description = "pressurised nodes of the outlet window"});
+  t.integer("acceleration_depth", &EhlOptions::acceleration_depth, 0, 10,
+            {.description = "Anderson acceleration of the cycles on a level: states mixed into the next start (0: "
+                            "plain cycles)"});
   t.rule([](const EhlOptions& o, const std::string& p) {
     if (o.pre_sweeps + o.post_sweeps < 1)
       throw InputError(fmt::format("{}pre_sweeps = {}, {}post_sweeps = {}: at least one relaxation per cycle", p,

@@ -7,7 +7,8 @@
 //   fas_local_treatments.cpp the spike's local Newton solve and the free boundary's sweeps;
 //   fas_coarsest.cpp         the start and the direct solve on the coarsest grid;
 //   fas_cycle.cpp            restriction, correction, cycles and full multigrid;
-//   fas_stop.cpp             the error estimate, the stop rules and the result's figures.
+//   fas_stop.cpp             the error estimate, the stop rules and the result's figures;
+//   fas_acceleration.cpp     the Anderson acceleration of a level's cycles.
 // The design and the measurements behind it: docs/research/ehl-multigrid-rebuild.md.
 #include <algorithm>
 #include <chrono>
@@ -19,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "anderson_mixing.h"
 #include "coarsest_solve.h"
 #include "deformation.h"
 #include "fas_multigrid.h"
@@ -473,6 +475,28 @@ class FasMultigrid::Impl {
 
   /// Cycles until the scaled residual and the force balance meet the tolerance.
   void iterate_to_residual(EhlResult& r);
+
+  // --- acceleration of the cycles (fas_acceleration.cpp) ------------------------------
+  /// Anderson acceleration of a level's cycles (EhlOptions::acceleration_depth): a cycle is a
+  /// fixed-point map G of the level's state x = (P, H0), and the next cycle starts from the
+  /// mixture of the last states and their images (AndersonMixing; Walker & Ni 2011). This is
+  /// Krylov acceleration of nonlinear multigrid (Washio & Oosterlee, ETNA 6 (1997) 271–290):
+  /// it removes the few slow modes a cycle leaves, here the one no coarse grid holds, the
+  /// Barus spike's load answering the coarse grid's H0 correction (docs/ehl-model.md,
+  /// twenty-first and twenty-seventh sessions). A mixed start whose scaled residual or force
+  /// balance is above the cycle's own image's is not taken: the image is, and the history
+  /// starts again (a mixture of two spikes is not a spike, and P ≥ 0 clips it).
+  struct CycleAcceleration {
+    std::unique_ptr<AndersonMixing> mixing;  ///< null: plain cycles
+    std::vector<double> start;              ///< (P, H0) the last cycle started from
+  };
+  [[nodiscard]] CycleAcceleration start_acceleration(const Level& l) const;
+  /// After a cycle from a.start, whose image (l.P, H0_) has the scaled residual or force
+  /// balance `image_residual` (the larger): sets the next cycle's start.
+  void accelerate(CycleAcceleration& a, Level& l, double image_residual);
+  /// A fresh mixing history (none for plain cycles and for the single-grid baseline, whose
+  /// sweeps are the benchmarks' unaccelerated reference).
+  [[nodiscard]] std::unique_ptr<AndersonMixing> new_mixing() const;
 
   void record_residual(EhlResult& r, Level& fine);
 

@@ -153,7 +153,9 @@ void FasMultigrid::Impl::iterate_to_error(EhlResult& r, std::size_t k, double fm
   Watched before = watched(fine);
   double previous_change = fmg_change;
   const double previous_residual = scaled_residual(fine);  // after the level's full-multigrid cycle
+  auto acceleration = start_acceleration(fine);
   for (int c = 0; c < o_.max_cycles; ++c) {
+    if (c > 0) accelerate(acceleration, fine, std::max(r.residual_history.back(), r.force_history.back()));
     cycle(k);
     r.fmg_cycles.back() = ++r.cycles;
     record_residual(r, fine);
@@ -192,7 +194,9 @@ void FasMultigrid::Impl::iterate_to_error(EhlResult& r, std::size_t k, double fm
 void FasMultigrid::Impl::iterate_to_residual(EhlResult& r) {
   Level& fine = *levels_.back();
   r.stop_rule = fmt::format("scaled residual and force balance below {:.1e}", o_.tolerance);
+  auto acceleration = start_acceleration(fine);
   for (int c = 0; c < o_.max_cycles; ++c) {
+    if (c > 0) accelerate(acceleration, fine, std::max(r.residual_history.back(), r.force_history.back()));
     cycle(levels_.size() - 1);
     ++r.cycles;
     record_residual(r, fine);

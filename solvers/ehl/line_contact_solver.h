@@ -86,6 +86,11 @@ struct EhlOptions {
   /// 4 over 16 ended the period-2 oscillation at (20, 10) on 4097 nodes (eighth session).
   int free_boundary_sweeps = 4;   ///<                                                  [0, 20]
   int free_boundary_window = 16;  ///<                                                  [1, 256]
+  /// Anderson acceleration of the cycles on a level: the states (P, H0) mixed into the next
+  /// cycle's start (Krylov acceleration of nonlinear multigrid, Washio & Oosterlee 1997); 0:
+  /// plain cycles. Depth 1 halved the tail of the 16385-node map and removed the slow
+  /// spike/force-balance mode at high L; 2 and 3 cost more (twenty-seventh session).  [0, 10]
+  int acceleration_depth = 1;
   double x_in = 0.0, x_out = 0.0; ///< domain; both 0 picks the problem's default
   bool direct_deformation = false; ///< the O(n²) sum instead of the FFT (the benchmarks' baseline)
   /// Relaxation on the finest grid alone, the benchmarks' single-grid baseline (issue 19): no
