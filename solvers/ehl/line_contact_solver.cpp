@@ -19,8 +19,9 @@ std::string EhlOptions::describe() const {
                                : fmt::format("stop at residual {:.0e}", tolerance);
   const std::string method =
       single_grid ? std::string("single grid, a relaxation and an H0 update per cycle")
-                  : fmt::format("FMG + {}({},{}){}", cycle == CycleType::W ? 'W' : cycle == CycleType::F ? 'F' : 'V',
+                  : fmt::format("FMG + {}({},{}){}{}", cycle == CycleType::W ? 'W' : cycle == CycleType::F ? 'F' : 'V',
                                 pre_sweeps, post_sweeps,
+                                cycle == CycleType::W ? fmt::format(" on {} levels, V above", w_cycle_levels) : "",
                                 acceleration_depth > 0 ? fmt::format(" with Anderson({})", acceleration_depth) : "");
   return fmt::format("{}, ω {:g}/{:g}, κ {:g}, lines ±{}, |Δ ln ε| ≤ {:g}, {}{}; {}", method, omega_gauss_seidel,
                      omega_jacobi, relaxation_switch, line_band, change_limit, grid,

@@ -49,9 +49,12 @@ struct EhlOptions {
   CycleType cycle = CycleType::W;
   /// Levels above the coarsest grid on which a W-cycle visits the coarser grid twice; above
   /// them it visits it once, so a cycle costs O(N) instead of the full W-cycle's O(N log N) in
-  /// one dimension. 5 converges the 71-point (M, L) map on the default grid and on 4097, 8193
-  /// and 16385 nodes; 4 leaves (2, 25) on 16385 nodes unconverged (sixteenth session).  [1, 14]
-  int w_cycle_levels = 5;
+  /// one dimension. 5 was the fewest that converged the 71-point (M, L) map on 16385 nodes (4
+  /// left (2, 25) unconverged, sixteenth session; 3 also (5, 20) and (10, 22.5), twenty-third):
+  /// the spike's slow mode, which the Anderson-accelerated cycles now remove. With them 2
+  /// converges every map (default grid, 641 … 16385 nodes, and the residual rule on 1025 …
+  /// 16385) for a default-map median of 91 WU against 125 (twenty-seventh session).  [1, 14]
+  int w_cycle_levels = 2;
   int pre_sweeps = 2;             ///< relaxations before the coarse-grid correction    [0, 20]
   int post_sweeps = 1;            ///< relaxations after it                             [0, 20]
   int max_cycles = 60;            ///< cycles on the finest grid before a failure        [1, 100000]

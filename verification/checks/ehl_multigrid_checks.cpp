@@ -306,7 +306,9 @@ constexpr Point factor_points[] = {{10, 0}, {20, 10}, {2, 10}, {1, 0}};
 // Venner & Lubrecht's line-contact multigrid reaches 0.1–0.2 a cycle. This W(2,1) design read
 // 0.23–0.38 while the coarse grids could flip the free boundary (eleventh session); with the
 // coarse nodes held at zero where the fine grid cavitates, 0.04–0.14 at these points on 2049
-// nodes (twelfth session, docs/ehl-model.md).
+// nodes (twelfth session, docs/ehl-model.md). With W only on the two levels above the coarsest
+// grid and V above (twenty-seventh session), 0.06, 0.19, 0.19, 0.08: cheaper cycles (less work
+// to 1e-9 at all four points) at a factor near the band's top.
 const RegisterCheck smoothing(CheckSpec{
     .id = "ehl.multigrid.convergence_factor", .section = section, .solver = solver,
     .reference = "Venner & Lubrecht 2000: 0.1–0.2 per cycle with their line-contact smoother",
