@@ -1,9 +1,10 @@
 #pragma once
 // FAS multigrid solver of the steady isothermal line-contact EHL problem
 // (Venner & Lubrecht, Multilevel Methods in Lubrication, 2000, ch. 6–8):
-//   - uniform grids, n_k = (n_0 − 1)·2^k + 1 nodes, full multigrid from the coarsest with one
-//     W-cycle per level; levels are added until the estimated discretisation error of H_c
-//     and H_min is below grid.target_error, or the grid is given;
+//   - uniform grids, n_k = (n_0 − 1)·2^k + 1 nodes, full multigrid from the coarsest; W-cycles
+//     on the levels next to the coarsest grid, V above, Anderson-accelerated on each level;
+//     levels are added until the estimated discretisation error of H_c and H_min is below
+//     grid.target_error, or the grid is given;
 //   - Reynolds equation with central Poiseuille and second-order upwind wedge terms
 //     (reynolds_stencil.h);
 //   - relaxation: Jacobi lines (distributive, zero-sum pattern (−½, 1, −½)) where the film's
