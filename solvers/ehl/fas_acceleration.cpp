@@ -24,8 +24,9 @@ FasMultigrid::Impl::CycleAcceleration FasMultigrid::Impl::start_acceleration(con
   return {new_mixing(), state_of(l.P, H0_)};
 }
 
-void FasMultigrid::Impl::accelerate(CycleAcceleration& a, Level& l, double image_residual) {
+void FasMultigrid::Impl::accelerate(CycleAcceleration& a, Level& l, const EhlResult& r) {
   if (!a.mixing) return;
+  const double image_residual = std::max(r.residual_history.back(), r.force_history.back());
   const std::vector<double> mixed = a.mixing->next(a.start, state_of(l.P, H0_));
   // The image, kept with its film to come back to.
   const std::vector<double> image_P = l.P, image_H = l.H;

@@ -491,9 +491,9 @@ class FasMultigrid::Impl {
     std::vector<double> start;              ///< (P, H0) the last cycle started from
   };
   [[nodiscard]] CycleAcceleration start_acceleration(const Level& l) const;
-  /// After a cycle from a.start, whose image (l.P, H0_) has the scaled residual or force
-  /// balance `image_residual` (the larger): sets the next cycle's start.
-  void accelerate(CycleAcceleration& a, Level& l, double image_residual);
+  /// After a cycle from a.start to its image (l.P, H0_), whose scaled residual and force
+  /// balance are the last of r's histories: sets the next cycle's start.
+  void accelerate(CycleAcceleration& a, Level& l, const EhlResult& r);
   /// A fresh mixing history (none for plain cycles and for the single-grid baseline, whose
   /// sweeps are the benchmarks' unaccelerated reference).
   [[nodiscard]] std::unique_ptr<AndersonMixing> new_mixing() const;

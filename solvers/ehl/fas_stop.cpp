@@ -155,7 +155,7 @@ void FasMultigrid::Impl::iterate_to_error(EhlResult& r, std::size_t k, double fm
   const double previous_residual = scaled_residual(fine);  // after the level's full-multigrid cycle
   auto acceleration = start_acceleration(fine);
   for (int c = 0; c < o_.max_cycles; ++c) {
-    if (c > 0) accelerate(acceleration, fine, std::max(r.residual_history.back(), r.force_history.back()));
+    if (c > 0) accelerate(acceleration, fine, r);
     cycle(k);
     r.fmg_cycles.back() = ++r.cycles;
     record_residual(r, fine);
@@ -196,7 +196,7 @@ void FasMultigrid::Impl::iterate_to_residual(EhlResult& r) {
   r.stop_rule = fmt::format("scaled residual and force balance below {:.1e}", o_.tolerance);
   auto acceleration = start_acceleration(fine);
   for (int c = 0; c < o_.max_cycles; ++c) {
-    if (c > 0) accelerate(acceleration, fine, std::max(r.residual_history.back(), r.force_history.back()));
+    if (c > 0) accelerate(acceleration, fine, r);
     cycle(levels_.size() - 1);
     ++r.cycles;
     record_residual(r, fine);

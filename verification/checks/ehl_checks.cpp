@@ -314,7 +314,8 @@ const RegisterSection ehl_section(SectionSpec{
       add_convergence_table(report);
       report.notes.push_back({section, fmt::format(
           "**The (M, L) map at the default settings (issue 19).** One scheme: full multigrid from a "
-          "coarsest grid sized by the film (solved directly in (P, H0)), W(2,1) cycles near the coarsest grid and V above, Anderson-accelerated, on each level until "
+          "coarsest grid sized by the film (solved directly in (P, H0)), W(2,1) cycles near the coarsest "
+          "grid and V above, Anderson-accelerated, on each level until "
           "the algebraic error left is below a tenth of the discretisation-error estimate from the "
           "converged levels, levels added until that estimate of H_c and H_min is below 0.5 %. Each "
           "cell: work units (finest-grid sweeps; the Newton steps of the coarsest grid and of the spike's "
