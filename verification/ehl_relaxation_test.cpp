@@ -467,13 +467,25 @@ EhlResult solve_on_inlet(const LineContactProblem& contact, int nodes, double x_
 // Rigid scaling (M < 3) measures X in ℓ ≈ 1.39b/M, not in b (fourteenth session). (1, 25) on
 // 4097 nodes: a coarsest grid of h ≤ ℓ (65 nodes, 1.5 in b) left the force balance at 2.5e-2,
 // H0 alternating by 0.016 between the W-cycle's two coarsest visits; h ≤ max(b, ℓ)/4
-// (257 nodes) converges it. (2, 25) on 8193 nodes: the spike window of 0.05ℓ = 0.035b stalled
+// (257 nodes) converged it, and h ≤ max(b, ℓ)/2 (129 nodes) does with the two visits mixed
+// (twenty-eighth session). (2, 25) on 8193 nodes: the spike window of 0.05ℓ = 0.035b stalled
 // at 0.965 a cycle; 0.05b converges it.
 TEST(FasMultigrid, RigidScalingSizesTheCoarsestGridAndSpikeWindowInB) {
   const auto one = solve_from_scratch(1.0, 25.0, 4097);
   EXPECT_TRUE(one.converged) << one.message;
   const auto two = solve_from_scratch(2.0, 25.0, 8193);
   EXPECT_TRUE(two.converged) << two.message;
+}
+
+// The W-cycle's two visits of a level mixed (visit_coarse_twice): at (1, 25) on 1025 nodes,
+// with the coarsest grid at h ≤ ℓ/2 (129 nodes), the 257-node level's spike solve answered each
+// visit's H0 correction with ±3.9e-2 of the load, H0 alternated between the visits, and the
+// 513-node level stalled at a force balance of 3.7e-2 (60 cycles, factor 1.01). Mixed, the
+// solve converges in 2 finest cycles (twenty-eighth session). Fails if the visits were not mixed.
+TEST(FasMultigrid, MixedCoarseVisitsStopTheAlternatingH0Correction) {
+  const auto r = solve_from_scratch(1.0, 25.0, 1025);
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_LE(r.cycles, 10);
 }
 
 // Seventeenth session, the coarsest grid's chord steps. (a) With the inlet at three times that

@@ -32,9 +32,7 @@ void FasMultigrid::Impl::accelerate(CycleAcceleration& a, Level& l, const EhlRes
   const std::vector<double> image_P = l.P, image_H = l.H;
   const double image_H0 = H0_;
   const auto image_film_of = l.film_of;
-  for (std::size_t i = 1; i + 1 < l.n; ++i) l.P[i] = std::max(0.0, mixed[i]);
-  H0_ = mixed.back();
-  l.film_of.valid = false;
+  set_state(l, mixed);
   // The mixed state's residual (its film and coefficients): counted as a sweep of the level.
   const double mixed_residual = std::max(scaled_residual(l), force_balance(l));
   node_sweeps_ += static_cast<double>(l.n);
@@ -47,6 +45,24 @@ void FasMultigrid::Impl::accelerate(CycleAcceleration& a, Level& l, const EhlRes
     a.mixing = new_mixing();
   }
   a.start = state_of(l.P, H0_);
+}
+
+void FasMultigrid::Impl::set_state(Level& l, const std::vector<double>& x) {
+  for (std::size_t i = 1; i + 1 < l.n; ++i) l.P[i] = l.cavitated_on_finer[i] ? 0.0 : std::max(0.0, x[i]);
+  H0_ = x.back();
+  l.film_of.valid = false;
+}
+
+void FasMultigrid::Impl::visit_coarse_twice(std::size_t k) {
+  Level& coarse = *levels_[k];
+  auto mixing = k > 0 ? new_mixing() : nullptr;  // the coarsest grid's visits are Newton solves
+  const std::vector<double> start = state_of(coarse.P, H0_);
+  cycle(k, CycleType::W);
+  const std::vector<double> first = state_of(coarse.P, H0_);
+  cycle(k, CycleType::W);
+  if (!mixing) return;
+  (void)mixing->next(start, first);  // the plain step: the history's first difference
+  set_state(coarse, mixing->next(first, state_of(coarse.P, H0_)));
 }
 
 }  // namespace gearbench::ehl

@@ -80,10 +80,10 @@ std::size_t FasMultigrid::Impl::nodes_resolving(double h_target) const {
 
 std::size_t FasMultigrid::Impl::coarsest_nodes() const {
   if (o_.coarsest_nodes > 0) return static_cast<std::size_t>(o_.coarsest_nodes);
-  // A quarter of the pressure zone's width scale, the larger of b and ℓ, in X = x/ℓ: 0.25 in
-  // Hertzian scaling (ℓ = b); in rigid scaling b ≈ 0.72·M·ℓ, so ℓ/4 up to M ≈ 1.4, b/4 above.
+  // Half the pressure zone's width scale, the larger of b and ℓ, in X = x/ℓ: 0.5 in Hertzian
+  // scaling (ℓ = b); in rigid scaling b ≈ 0.72·M·ℓ, so ℓ/2 up to M ≈ 1.4, b/2 above.
   const double zone = std::max(problem_.hertz_half_width() / problem_.length_scale(), 1.0);
-  return nodes_resolving(std::min(0.25 * zone, coarsest_film_spacing * std::sqrt(film_estimate())));
+  return nodes_resolving(std::min(coarsest_zone_spacing * zone, coarsest_film_spacing * std::sqrt(film_estimate())));
 }
 
 int FasMultigrid::Impl::levels_for_finest(std::size_t nodes) {

@@ -162,18 +162,28 @@ class FasMultigrid::Impl {
   // --- hierarchy (fas_multigrid.cpp) ---------------------------------------------------
   void add_level();
   /// The coarsest grid: as given, or the fewest nodes, 32·2^k + 1, whose mesh resolves
-  /// both the pressure zone (h ≤ max(b, ℓ)/4: b/4 in Hertzian scaling; in rigid scaling, M < 3,
-  /// b ≈ 0.72·M·ℓ, and the domain of 43ℓ needs 257 nodes at M = 1, 129 at M = 2; b/4 alone
-  /// would refine without bound as M → 0, where the contact is rigid and its zone ℓ wide) and
-  /// the film. At high L the load concentrates in the Hertzian zone
+  /// both the pressure zone (h ≤ max(b, ℓ)/2, coarsest_zone_spacing: b/2 in Hertzian scaling; in
+  /// rigid scaling, M < 3, b ≈ 0.72·M·ℓ, and the domain of 43ℓ needs 129 nodes at M = 1, 65 at
+  /// M = 2; b/2 alone would refine without bound as M → 0, where the contact is rigid and its
+  /// zone ℓ wide) and the film. At high L the load concentrates in the Hertzian zone
   /// (82 % within −1 … 0.5ℓ at (1, 25)); the earlier h ≤ ℓ put 1.5 nodes in b there: after
   /// each 65-node correction the 129-node grid's relaxation and spike solve moved ∫P by
   /// ∓2.4e-2, and the W-cycle's two visits moved H0 by ±0.016 in turn (force balance stalled
-  /// at 2.5e-2 on 4097 nodes; fourteenth session). The film: the discretisation error of the film, a
+  /// at 2.5e-2 on 4097 nodes; fourteenth session). That alternation is what the mixing of the
+  /// two visits removes (visit_coarse_twice). The film: the discretisation error of the film, a
   /// difference of O(1) terms (H0, X²/2 and the deformation), is O(h²), so h ≤ c·√H_est is to keep
   /// the coarse film positive (coarsest_film_spacing, which says where it does not; H_est is
   /// Moes' isoviscous film).
   [[nodiscard]] std::size_t coarsest_nodes() const;
+  /// The coarsest grid's h ≤ coarsest_zone_spacing·max(b, ℓ). A quarter (fourteenth session, see
+  /// above) made the coarsest grid a quarter of the finest at M ≤ 2 (257 of 1025 nodes at M = 1),
+  /// whose Newton visits and start were 74 % of the default map's WU. Half stalled the W-cycle's
+  /// two coarse visits at light loads and high L until they were mixed (visit_coarse_twice); with
+  /// the mixing and W on three levels it converges every map (default grid, 641 … 16385 nodes,
+  /// the residual rule on 1025 … 16385 nodes): default-map WU median / p90 / max 91 / 435 / 1167
+  /// → 76 / 186 / 311 (twenty-eighth session). A whole b or ℓ, with W on two levels, left
+  /// (2, 17.5 … 25) on the default grid unconverged.
+  static constexpr double coarsest_zone_spacing = 0.5;
   /// c of the coarsest grid's h ≤ c·√H_est. At M = 1000 (H_est ≈ 2.6e-4 in Hertzian units) a
   /// 65-node coarsest grid (h ≈ 6√H_est) starts with a negative film and ends in NaN, 129 nodes
   /// (h ≈ 3√H_est) converge: 3 keeps a factor 2 in h from that failure. It does not keep every
@@ -497,6 +507,21 @@ class FasMultigrid::Impl {
   /// A fresh mixing history (none for plain cycles and for the single-grid baseline, whose
   /// sweeps are the benchmarks' unaccelerated reference).
   [[nodiscard]] std::unique_ptr<AndersonMixing> new_mixing() const;
+  /// Sets level l's P (≥ 0, zero where the finer grid is cavitated) and H0 to the state x.
+  void set_state(Level& l, const std::vector<double>& x);
+  /// The W-cycle's two visits of level k (below a W level), the second's image mixed with the
+  /// first's by Anderson's depth-1 step (the secant of the two visits): the nonlinear analogue
+  /// of the K-cycle, whose two coarse iterations are combined by a Krylov step (Notay &
+  /// Vassilevski, Numer. Linear Algebra Appl. 15 (2008) 473–487). Without it, where the level
+  /// holds the Barus spike's load but not its response to H0 (a grid too coarse for the
+  /// spike), the two visits' H0 corrections alternate: at (1, 25) with a 129-node coarsest
+  /// grid the 257-node level's spike solve moved the force balance by ±3.9e-2 after each, and
+  /// the 513-node level's cycles stalled at 3.7e-2 (docs/ehl-model.md, twenty-eighth session).
+  /// The mixture is taken unguarded: the level's correction and relaxation follow it, and a
+  /// guard like accelerate()'s changed no map's convergence (all 0 failures, medians within 2 %).
+  /// On the coarsest grid (k = 0) the visits are Newton solves, and are not mixed. The mixing's
+  /// few vector operations are not counted (as correct()'s are not).
+  void visit_coarse_twice(std::size_t k);
 
   void record_residual(EhlResult& r, Level& fine);
 

@@ -194,6 +194,9 @@ void FasMultigrid::Impl::iterate_to_error(EhlResult& r, std::size_t k, double fm
 void FasMultigrid::Impl::iterate_to_residual(EhlResult& r) {
   Level& fine = *levels_.back();
   r.stop_rule = fmt::format("scaled residual and force balance below {:.1e}", o_.tolerance);
+  r.cycles = 0;  // the finest grid's (full multigrid's coarser levels may have iterated)
+  r.residual_history.clear();
+  r.force_history.clear();
   auto acceleration = start_acceleration(fine);
   for (int c = 0; c < o_.max_cycles; ++c) {
     if (c > 0) accelerate(acceleration, fine, r);

@@ -53,9 +53,11 @@ struct EhlOptions {
   /// one dimension. 5 was the fewest that converged the 71-point (M, L) map on 16385 nodes (4
   /// left (2, 25) unconverged, sixteenth session; 3 also (5, 20) and (10, 22.5), twenty-third):
   /// the spike's slow mode, which the Anderson-accelerated cycles now remove. With them 2
-  /// converges every map (default grid, 641 … 16385 nodes, and the residual rule on 1025 …
-  /// 16385) for a default-map median of 91 WU against 125 (twenty-seventh session).  [1, 14]
-  int w_cycle_levels = 2;
+  /// converged every map (twenty-seventh session); with the coarsest grid halved to h ≤ b/2
+  /// the same grids are one level further from it, and 3 keeps W on them: 2 left (1, 17.5) on
+  /// 8193 and 16385 nodes unconverged (the finer levels' V-cycles at factor 0.97; twenty-eighth
+  /// session).                                                                          [1, 14]
+  int w_cycle_levels = 3;
   int pre_sweeps = 2;             ///< relaxations before the coarse-grid correction    [0, 20]
   int post_sweeps = 1;            ///< relaxations after it                             [0, 20]
   int max_cycles = 60;            ///< cycles on the finest grid before a failure        [1, 100000]
@@ -92,9 +94,13 @@ struct EhlOptions {
   int free_boundary_window = 16;  ///<                                                  [1, 256]
   /// Anderson acceleration of the cycles on a level: the states (P, H0) mixed into the next
   /// cycle's start (Krylov acceleration of nonlinear multigrid, Washio & Oosterlee 1997); 0:
-  /// plain cycles. Depth 1 halved the tail of the 16385-node map and removed the slow
-  /// spike/force-balance mode at high L; 2 and 3 cost more (twenty-seventh session).  [0, 10]
-  int acceleration_depth = 1;
+  /// plain cycles; also whether the W-cycle's two coarse visits are mixed. Depth 1 halved the
+  /// tail of the 16385-node map and removed the slow spike/force-balance mode at high L; 2 and
+  /// 3 cost more (twenty-seventh session). With the coarsest grid at h ≤ b/2 and W on three
+  /// levels, 2 takes the force balance at (2, 10) on 2049 nodes to 1e-9 in 6 cycles instead of 9
+  /// (mean factor 0.099 against 0.214) and lowers the maps' maxima (16385 nodes 260 → 211 WU,
+  /// its residual rule 364 → 224), medians equal (twenty-eighth session).           [0, 10]
+  int acceleration_depth = 2;
   double x_in = 0.0, x_out = 0.0; ///< domain; both 0 picks the problem's default
   bool direct_deformation = false; ///< the O(n²) sum instead of the FFT (the benchmarks' baseline)
   /// Relaxation on the finest grid alone, the benchmarks' single-grid baseline (issue 19): no
