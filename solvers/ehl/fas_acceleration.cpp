@@ -55,7 +55,7 @@ void FasMultigrid::Impl::set_state(Level& l, const std::vector<double>& x) {
 
 void FasMultigrid::Impl::visit_coarse_twice(std::size_t k) {
   Level& coarse = *levels_[k];
-  auto mixing = k > 0 ? new_mixing() : nullptr;  // the coarsest grid's visits are Newton solves
+  auto mixing = new_mixing();
   const std::vector<double> start = state_of(coarse.P, H0_);
   cycle(k, CycleType::W);
   const std::vector<double> first = state_of(coarse.P, H0_);

@@ -23,8 +23,11 @@ void FasMultigrid::Impl::cycle(std::size_t k, CycleType type) {
   const std::vector<double> injected = coarse.P;
   if (type == CycleType::W) {
     // Two visits up to w_cycle_levels above the coarsest grid, one above them: a full W-cycle
-    // costs ν sweeps of the finest grid per level in one dimension, O(N log N) a cycle.
-    if (k <= static_cast<std::size_t>(o_.w_cycle_levels))
+    // costs ν sweeps of the finest grid per level in one dimension, O(N log N) a cycle. The
+    // coarsest grid is visited once: two visits there are two Newton solves of the same problem
+    // in a row, and one, stopped at its merit's reduction, is enough (the maps' medians 3–11 %
+    // lower, 0 failures on every map; twenty-eighth session).
+    if (k <= static_cast<std::size_t>(o_.w_cycle_levels) && k > 1)
       visit_coarse_twice(k - 1);
     else
       cycle(k - 1, CycleType::W);

@@ -519,8 +519,8 @@ class FasMultigrid::Impl {
   /// the 513-node level's cycles stalled at 3.7e-2 (docs/ehl-model.md, twenty-eighth session).
   /// The mixture is taken unguarded: the level's correction and relaxation follow it, and a
   /// guard like accelerate()'s changed no map's convergence (all 0 failures, medians within 2 %).
-  /// On the coarsest grid (k = 0) the visits are Newton solves, and are not mixed. The mixing's
-  /// few vector operations are not counted (as correct()'s are not).
+  /// Not for the coarsest grid (k = 0), which a W-cycle visits once (cycle()). The mixing's few
+  /// vector operations are not counted (as correct()'s are not).
   void visit_coarse_twice(std::size_t k);
 
   void record_residual(EhlResult& r, Level& fine);
