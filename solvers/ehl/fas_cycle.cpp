@@ -140,9 +140,8 @@ void FasMultigrid::Impl::full_multigrid(EhlResult& r) {
     const double fmg_change = change_of(watched(*levels_[k]), start);
     if (finest || !fmg_cycle_reaches_error(r, k, fmg_change)) iterate_to_error(r, k, fmg_change);
     // A level below the finest that misses its error is the residual iteration's start all the
-    // same; under the error rule the solve ends there.
+    // same (iterate_to_residual decides the outcome); under the error rule the solve ends there.
     if (!r.converged && error_rule) break;
-    r.converged = error_rule && r.converged;
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -194,9 +195,11 @@ void FasMultigrid::Impl::iterate_to_error(EhlResult& r, std::size_t k, double fm
 void FasMultigrid::Impl::iterate_to_residual(EhlResult& r) {
   Level& fine = *levels_.back();
   r.stop_rule = fmt::format("scaled residual and force balance below {:.1e}", o_.tolerance);
-  r.cycles = 0;  // the finest grid's (full multigrid's coarser levels may have iterated)
+  // The finest grid's cycles and factor only (full multigrid's coarser levels may have iterated).
+  r.cycles = 0;
   r.residual_history.clear();
   r.force_history.clear();
+  r.convergence_factor = std::numeric_limits<double>::quiet_NaN();
   auto acceleration = start_acceleration(fine);
   for (int c = 0; c < o_.max_cycles; ++c) {
     if (c > 0) accelerate(acceleration, fine, r);
