@@ -568,8 +568,8 @@ class FasMultigrid::Impl {
   /// and that level's nodes (fmg_cycle_reaches_error); ρ ≥ 1 until one has.
   double measured_factor_ = 1.0;
   std::size_t factor_nodes_ = 0;
-  /// The factor that level measured from its own cycles, the floor of the next level's ρ
-  /// (iterate_to_error); 0 until a level has iterated.
+  /// The factor the last level that iterated to its error measured from its own cycles, before
+  /// any floor: the floor of the next level's ρ (iterate_to_error); 0 until a level has.
   double last_level_factor_ = 0.0;
   /// Why the iteration cannot go on (a coarsest grid without a Newton step); empty while it can.
   /// The solve then ends unconverged with this message: a status, not an exception.

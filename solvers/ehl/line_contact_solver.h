@@ -58,11 +58,12 @@ struct EhlOptions {
   /// 8193 and 16385 nodes unconverged (the finer levels' V-cycles at factor 0.97; twenty-eighth
   /// session).                                                                          [1, 14]
   int w_cycle_levels = 3;
-  /// Relaxations before the coarse-grid correction. One, not Venner & Lubrecht's two: with the
-  /// stop rule's factor floored at the last level's (fas_stop.cpp), (1,1) cycles cut the maps'
-  /// median work by 10–22 % and converge every map, the rule keeping its claim (worst 0.81 of
-  /// its bound against 0.77 with (2,1)); (0,1) broke it (4.3 × at (100, 7.5)) and (1,1)
-  /// without the floor left no margin (0.99). Twenty-ninth session.               [0, 20]
+  /// Relaxations before the coarse-grid correction: one, two until the twenty-ninth session.
+  /// With the stop rule's factor floored at the last level's (fas_stop.cpp), (1,1) cycles cut
+  /// the maps' median work by 10–22 % and converge every map, the rule keeping its claim (worst
+  /// 0.81 of its bound against 0.77 with (2,1)); (0,1) broke it (4.3 × at (100, 7.5) without the
+  /// floor, 2.6 × at (1000, 0) with it) and (1,1) without the floor left no margin (0.99).
+  ///                                                                                [0, 20]
   int pre_sweeps = 1;
   int post_sweeps = 1;            ///< relaxations after it                             [0, 20]
   int max_cycles = 60;            ///< cycles on the finest grid before a failure        [1, 100000]
