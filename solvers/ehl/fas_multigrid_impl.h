@@ -181,8 +181,9 @@ class FasMultigrid::Impl {
   /// two coarse visits at light loads and high L until they were mixed (visit_coarse_twice); with
   /// the mixing and W on three levels it converges every map (default grid, 641 … 16385 nodes,
   /// the residual rule on 1025 … 16385 nodes): default-map WU median / p90 / max 91 / 435 / 1167
-  /// → 76 / 186 / 311, and 69 / 162 / 269 with one coarsest visit a cycle (twenty-eighth session). A whole b or ℓ, with W on two levels, left
-  /// (2, 17.5 … 25) on the default grid unconverged.
+  /// → 76 / 186 / 311, and 69 / 162 / 269 with one coarsest visit a cycle (twenty-eighth
+  /// session). A whole b or ℓ, with W on two levels, left (2, 17.5 … 25) on the default grid
+  /// unconverged.
   static constexpr double coarsest_zone_spacing = 0.5;
   /// c of the coarsest grid's h ≤ c·√H_est. At M = 1000 (H_est ≈ 2.6e-4 in Hertzian units) a
   /// 65-node coarsest grid (h ≈ 6√H_est) starts with a negative film and ends in NaN, 129 nodes
