@@ -78,6 +78,9 @@ void solve_to_error(benchmark::State& state, double M, double L) {
   }
   state.counters["nodes"] = static_cast<double>(r.X.size());
   state.counters["work_units"] = r.work_units;
+  // Of them, the stop rule's cycles after full multigrid's one a level, and the coarsest start.
+  state.counters["wu_iterating"] = r.work_units_iterating;
+  state.counters["wu_start"] = r.work_by_part.start;
   state.counters["cycles"] = r.cycles;
   state.counters["converged"] = r.converged ? 1.0 : 0.0;
   state.counters["error_estimate"] = std::isfinite(r.error_estimate) ? r.error_estimate : -1.0;

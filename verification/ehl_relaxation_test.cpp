@@ -304,6 +304,30 @@ TEST(FasMultigrid, DefaultSolveReachesItsTargetAndReportsTheRule) {
   EXPECT_GE(r.fmg_nodes.size(), 3u);
 }
 
+// The work by part adds up to work_units, every part of a high-L solve does some, and the parts
+// keep the ratio their counts fix: a cycle's visit of level k sweeps its n_k nodes pre_sweeps +
+// post_sweeps times and restricts to (n_k + 1)/2 coarse nodes. A part counted twice or not at
+// all breaks the sum or the ratio.
+TEST(FasMultigrid, WorkByPartAddsUpToTheWorkUnits) {
+  const LineContactProblem p(LineContactData::from_moes(10.0, 17.5));
+  EhlOptions o;
+  o.nodes = 1025;
+  const auto r = LineContactSolver(p, o).solve();
+  const EhlWork& w = r.work_by_part;
+  EXPECT_NEAR(w.total(), r.work_units, 1e-12 * r.work_units);
+  for (const double part : {w.start, w.relaxation, w.restriction, w.coarsest, w.spike, w.free_boundary,
+                            w.interpolation, w.acceleration})
+    EXPECT_GT(part, 0.0);
+  const double sweeps = o.pre_sweeps + o.post_sweeps;
+  const double one_above_coarsest = 2.0 * static_cast<double>(r.fmg_nodes.front()) - 1.0;
+  EXPECT_GE(w.restriction / w.relaxation, 1.0 / (2.0 * sweeps));
+  EXPECT_LE(w.restriction / w.relaxation, (1.0 + 1.0 / one_above_coarsest) / (2.0 * sweeps));
+  // The cycles after the levels' full-multigrid cycles: some (the finest takes at least one),
+  // not all (the start and the full-multigrid cycles are not theirs).
+  EXPECT_GT(r.work_units_iterating, 0.0);
+  EXPECT_LT(r.work_units_iterating, r.work_units - w.start);
+}
+
 // A level below the finest whose full-multigrid cycle leaves an algebraic error below the
 // rule's bound, at the factor measured on a coarser level, takes no second cycle; the finest
 // grid, whose figures are the answer, always does (its change is a cycle's own). At (10, 0) on
@@ -343,6 +367,8 @@ TEST(FasMultigrid, WarmStartFromTheSolutionStays) {
   const auto again = FasMultigrid(p, o, ContactState{}).solve(WarmStart{s.P, s.H0});
   ASSERT_TRUE(again.converged);
   EXPECT_LE(again.cycles, 2);
+  EXPECT_NEAR(again.work_units_iterating, again.work_units, 1e-12 * again.work_units);  // no full multigrid
+  EXPECT_EQ(again.work_by_part.start, 0.0);
   const double h_min = *std::min_element(s.H.begin(), s.H.end());
   for (std::size_t i = 0; i < s.H.size(); ++i) EXPECT_NEAR(again.H[i], s.H[i], 1e-6 * h_min) << i;
 }

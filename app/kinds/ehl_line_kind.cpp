@@ -53,6 +53,12 @@ struct EhlLineCase {
   }
 };
 
+json work_by_part_json(const ehl::EhlWork& w) {
+  return {{"start", w.start},   {"relaxation", w.relaxation},       {"restriction", w.restriction},
+          {"coarsest", w.coarsest}, {"spike", w.spike},             {"free_boundary", w.free_boundary},
+          {"interpolation", w.interpolation}, {"acceleration", w.acceleration}};
+}
+
 json result_json(const ehl::LineContactProblem& p, const ehl::EhlResult& r) {
   const auto& d = p.data();
   const double to_moes = 1.0 / d.moes_film_scale();
@@ -76,6 +82,8 @@ json result_json(const ehl::LineContactProblem& p, const ehl::EhlResult& r) {
       {"diagnostics", {{"converged", r.converged}, {"message", r.message}, {"scheme", r.scheme},
                        {"stop_rule", r.stop_rule}, {"levels", r.levels}, {"cycles", r.cycles},
                        {"work_units", r.work_units}, {"work_units_at_error", finite_or_null(r.work_units_at_error)},
+                       {"work_units_by_part", work_by_part_json(r.work_by_part)},
+                       {"work_units_iterating", r.work_units_iterating},
                        {"convergence_factor", finite_or_null(r.convergence_factor)},
                        {"seconds", r.seconds}, {"nodes", r.X.size()},
                        {"scaling", p.hertzian_scaling() ? "hertzian" : "rigid_isoviscous"},

@@ -35,7 +35,7 @@ void FasMultigrid::Impl::accelerate(CycleAcceleration& a, Level& l, const EhlRes
   set_state(l, mixed);
   // The mixed state's residual (its film and coefficients): counted as a sweep of the level.
   const double mixed_residual = std::max(scaled_residual(l), force_balance(l));
-  node_sweeps_ += static_cast<double>(l.n);
+  node_sweeps_.acceleration += static_cast<double>(l.n);
   if (!(mixed_residual <= image_residual)) {
     // The next cycle's relaxation recomputes the coefficients; the film is the image's again.
     l.P = image_P;

@@ -20,7 +20,7 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance, d
     const bool kept = coarsest_newton_.holds(held);
     if (!kept && !factorize_coarsest(l, c, std::move(held))) break;
     const CoarsestStep step = coarsest_newton_.step(residual, l.g - integral(l));
-    node_sweeps_ += coarsest_newton_.dense() ? dense_solve_cost * std::pow(static_cast<double>(l.n), 2)
+    coarsest_sweeps() += coarsest_newton_.dense() ? dense_solve_cost * std::pow(static_cast<double>(l.n), 2)
                                              : krylov_solve_cost(coarsest_newton_.jacobian(), step.iterations);
     // Backtracking: the largest of 1, ½, ¼, … that lowers the merit; none does: the solve
     // keeps its last iterate (strict descent: a Newton step on a live coarse grid can
@@ -73,8 +73,8 @@ bool FasMultigrid::Impl::factorize_coarsest(Level& l, const ReynoldsCoefficients
   // Dense: its entries (uncounted before the nineteenth session) and its LU; else the band's.
   if (info == StepInfo::success) {
     const auto& J = coarsest_newton_.jacobian();
-    node_sweeps_ += coarsest_newton_.dense()
-                        ? dense_step_cost * std::pow(static_cast<double>(l.n), 3) + J.dense_cost() / multiply_adds_per_sweep
+    coarsest_sweeps() += coarsest_newton_.dense()
+                             ? dense_step_cost * std::pow(static_cast<double>(l.n), 3) + J.dense_cost() / multiply_adds_per_sweep
                         : BandPreconditioner::factorize_cost(J) / multiply_adds_per_sweep;
   }
   if (info != StepInfo::success) fail_on_coarsest(l, info);
@@ -100,7 +100,7 @@ std::vector<double> FasMultigrid::Impl::coarsest_residuals(const Level& l) const
 double FasMultigrid::Impl::coarsest_merit(Level& l) {
   update_film(l);
   update_coefficients(l);
-  node_sweeps_ += static_cast<double>(l.n);
+  coarsest_sweeps() += static_cast<double>(l.n);
   const auto r = coarsest_residuals(l);
   double sum = 0.0;
   for (std::size_t i = 1; i + 1 < l.n; ++i) {
@@ -117,11 +117,13 @@ void FasMultigrid::Impl::start_on_coarsest() {
   initial_guess(l);
   const double exponent_at_hertz = problem_.log_viscosity(problem_.hertz_pressure() / problem_.pressure_scale());
   const int stages = std::max(1, static_cast<int>(std::ceil(exponent_at_hertz / homotopy_step)));
+  starting_ = true;
   for (int s = 0; s <= stages && failure_.empty(); ++s) {
     viscosity_exponent_ = static_cast<double>(s) / stages;
     solve_coarsest(l, coarsest_steps_per_stage, s == stages ? coarsest_tolerance : homotopy_tolerance);
   }
   viscosity_exponent_ = 1.0;
+  starting_ = false;
 }
 
 void FasMultigrid::Impl::initial_guess(Level& l) {

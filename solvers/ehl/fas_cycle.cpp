@@ -91,7 +91,7 @@ void FasMultigrid::Impl::restrict_problem(Level& fine, Level& coarse) {
   // solves, a restriction took 0.24–0.39 of one per fine node ((10, 0) on 16385 nodes, (10, 17.5)
   // on 4097, (20, 10) on 1025, (1, 17.5) on 2049, (200, 0) on 4097; twenty-second session) and
   // was not counted before; the coarse-grid correction (correct) took 0.02–0.04 and is not.
-  node_sweeps_ += static_cast<double>(coarse.n);
+  node_sweeps_.restriction += static_cast<double>(coarse.n);
 }
 
 bool FasMultigrid::Impl::grid_complete(const EhlResult& r, std::size_t levels) const {
@@ -110,7 +110,7 @@ void FasMultigrid::Impl::full_multigrid(EhlResult& r) {
     interpolate_solution(*levels_[k - 1], *levels_[k]);
     make_finest(*levels_[k]);
     update_film(*levels_[k]);
-    node_sweeps_ += static_cast<double>(levels_[k]->n);
+    node_sweeps_.interpolation += static_cast<double>(levels_[k]->n);
     // The cubic interpolation of a resolved spike overshoots (eighth session); the cycle's first
     // relaxation brings the film outside the spike's window up to date.
     (void)relax_spike(*levels_[k]);

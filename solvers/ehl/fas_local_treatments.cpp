@@ -40,7 +40,7 @@ FasMultigrid::Impl::NodeRange FasMultigrid::Impl::relax_spike(Level& l) {
   const auto refresh = [&] {
     update_film_window(l, base, lo, hi);
     update_coefficients_window(l, lo, hi);
-    node_sweeps_ += window_film_cost(hi - lo + 1, hi - lo + 1);
+    node_sweeps_.spike += window_film_cost(hi - lo + 1, hi - lo + 1);
   };
   const auto merit = [&]() {
     double sum = 0.0;
@@ -64,11 +64,11 @@ FasMultigrid::Impl::NodeRange FasMultigrid::Impl::relax_spike(Level& l) {
       J.set_row(i, row.dL_dH, row.band);
       rhs(static_cast<Eigen::Index>(i - a)) = r;
     }
-    node_sweeps_ += BandPreconditioner::factorize_cost(J) / multiply_adds_per_sweep;
+    node_sweeps_.spike += BandPreconditioner::factorize_cost(J) / multiply_adds_per_sweep;
     Eigen::VectorXd x;
     if (m <= BandPreconditioner::band_width + 1) {  // the band is the whole matrix: solved directly
       x = BandPreconditioner().compute(J).solve(rhs);
-      node_sweeps_ += krylov_solve_cost(J, 0);
+      node_sweeps_.spike += krylov_solve_cost(J, 0);
     } else {
       Eigen::GMRES<KernelJacobian, BandPreconditioner> gmres;
       gmres.setTolerance(spike_krylov_tolerance);
@@ -76,7 +76,7 @@ FasMultigrid::Impl::NodeRange FasMultigrid::Impl::relax_spike(Level& l) {
       gmres.set_restart(spike_krylov_iterations);
       gmres.compute(J);
       x = gmres.solve(rhs);
-      node_sweeps_ += krylov_solve_cost(J, static_cast<int>(gmres.iterations()));
+      node_sweeps_.spike += krylov_solve_cost(J, static_cast<int>(gmres.iterations()));
     }
     if (!x.allFinite()) break;
     const std::vector<double> P0 = l.P;
@@ -104,7 +104,7 @@ void FasMultigrid::Impl::relax_free_boundary(Level& l, const FilmBase& before, N
   // The window's film with the spike's changes: the nodes its sweeps read (as in relax()).
   const std::size_t lo = a >= 3 ? a - 3 : 0, hi = std::min(l.n - 1, b + 2);
   update_film_window(l, before, lo, hi, changed);
-  node_sweeps_ += window_film_cost(hi - lo + 1, changed.last - changed.first + 1);
+  node_sweeps_.free_boundary += window_film_cost(hi - lo + 1, changed.last - changed.first + 1);
   const FilmBase base{l.P, l.H};
   for (int s = 0; s < o_.free_boundary_sweeps; ++s) relax(l, a, b, &base);
 }

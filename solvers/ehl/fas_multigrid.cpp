@@ -54,6 +54,9 @@ EhlResult FasMultigrid::Impl::solve(const std::optional<WarmStart>& warm) {
   for (const auto& l : levels_) r.seconds_per_level.push_back(l->seconds);
   r.levels = static_cast<int>(levels_.size());
   r.work_units = work_units();
+  const double per_sweep = 1.0 / static_cast<double>(levels_.back()->n);
+  r.work_by_part = node_sweeps_.scaled(per_sweep);
+  r.work_units_iterating = iterating_sweeps_ * per_sweep;
   fill_figures(*levels_.back(), r);
   return r;
 }

@@ -545,7 +545,16 @@ class FasMultigrid::Impl {
 
   [[nodiscard]] static double last(const std::vector<double>& v) { return v.empty() ? 0.0 : v.back(); }
 
-  [[nodiscard]] double work_units() const { return node_sweeps_ / static_cast<double>(levels_.back()->n); }
+  [[nodiscard]] double work_units() const { return node_sweeps_.total() / static_cast<double>(levels_.back()->n); }
+  /// The node-sweeps of the coarsest grid's Newton steps: the start's, or a cycle's visit's.
+  [[nodiscard]] double& coarsest_sweeps() { return starting_ ? node_sweeps_.start : node_sweeps_.coarsest; }
+  /// Runs iterate(), counting its work as the stop rule's iterations (EhlResult::work_units_iterating).
+  template <typename Iterate>
+  void counted_as_iterating(Iterate iterate) {
+    const double before = node_sweeps_.total();
+    iterate();
+    iterating_sweeps_ += node_sweeps_.total() - before;
+  }
   /// The last pressurised node (the outlet's free boundary); 0 if none.
   [[nodiscard]] static std::size_t last_pressurised(const std::vector<double>& P);
   /// The pressure spike: the last local maximum of P before the outlet's cavitation.
@@ -561,7 +570,10 @@ class FasMultigrid::Impl {
   std::vector<std::unique_ptr<Level>> levels_;
   double H0_ = 0.0;
   double viscosity_exponent_ = 1.0;  ///< s of the start's homotopy η̄^s (1 after the start)
-  double node_sweeps_ = 0.0;         ///< work: Σ nodes of every sweep, dense steps by their flops
+  /// Work by part: Σ nodes of every sweep, dense steps by their flops.
+  EhlWork node_sweeps_;
+  double iterating_sweeps_ = 0.0;  ///< of it, the cycles after the levels' full-multigrid cycles
+  bool starting_ = false;          ///< start_on_coarsest is running
   double coarse_h_min_ = 0.0, coarse_p_max_ = 0.0, level_h_min_ = 0.0, level_p_max_ = 0.0;
   bool has_level_ = false;   ///< a full-multigrid level was recorded
   bool has_coarse_ = false;  ///< a solution on the next-coarser grid was recorded (full multigrid)

@@ -156,8 +156,10 @@ void FasMultigrid::Impl::iterate_to_error(EhlResult& r, std::size_t k, double fm
   const double previous_residual = scaled_residual(fine);  // after the level's full-multigrid cycle
   auto acceleration = start_acceleration(fine);
   for (int c = 0; c < o_.max_cycles; ++c) {
-    if (c > 0) accelerate(acceleration, fine, r);
-    cycle(k);
+    counted_as_iterating([&] {
+      if (c > 0) accelerate(acceleration, fine, r);
+      cycle(k);
+    });
     r.fmg_cycles.back() = ++r.cycles;
     record_residual(r, fine);
     if (diverged(r)) break;
@@ -209,8 +211,10 @@ void FasMultigrid::Impl::iterate_to_residual(EhlResult& r) {
   r.convergence_factor = std::numeric_limits<double>::quiet_NaN();
   auto acceleration = start_acceleration(fine);
   for (int c = 0; c < o_.max_cycles; ++c) {
-    if (c > 0) accelerate(acceleration, fine, r);
-    cycle(levels_.size() - 1);
+    counted_as_iterating([&] {
+      if (c > 0) accelerate(acceleration, fine, r);
+      cycle(levels_.size() - 1);
+    });
     ++r.cycles;
     record_residual(r, fine);
     if (diverged(r)) break;

@@ -29,10 +29,10 @@ std::string EhlOptions::describe() const {
 }
 
 std::string EhlResult::summary() const {
-  return fmt::format("{}: {} levels ({} nodes), {} cycles, {:.1f} work units, {:.3f} s; h_min {:.4e} m, "
-                     "h_c {:.4e} m, p_max {:.4e} Pa; error estimate {}",
-                     converged ? "converged" : "NOT converged", levels, X.size(), cycles, work_units, seconds, h_min,
-                     h_central, p_max,
+  return fmt::format("{}: {} levels ({} nodes), {} cycles, {:.1f} work units ({:.1f} after full multigrid's cycles), "
+                     "{:.3f} s; h_min {:.4e} m, h_c {:.4e} m, p_max {:.4e} Pa; error estimate {}",
+                     converged ? "converged" : "NOT converged", levels, X.size(), cycles, work_units,
+                     work_units_iterating, seconds, h_min, h_central, p_max,
                      std::isnan(error_estimate) ? std::string("none") : fmt::format("{:.2g}", error_estimate));
 }
 

@@ -127,6 +127,27 @@ struct EhlOptions {
   [[nodiscard]] std::string describe() const;
 };
 
+/// A solve's work by the part of the method that did it, in sweeps of the finest grid
+/// (EhlResult::work_units is their sum).
+struct EhlWork {
+  double start = 0.0;          ///< the coarsest grid's start: the Newton solves of its homotopy stages
+  double relaxation = 0.0;     ///< the cycles' pre- and post-sweeps over whole grids
+  double restriction = 0.0;    ///< the fine residuals and the coarse films and coefficients of the FAS problems
+  double coarsest = 0.0;       ///< the coarsest grid's Newton visits within the cycles
+  double spike = 0.0;          ///< the pressure spike's local Newton solves
+  double free_boundary = 0.0;  ///< the outlet's extra sweeps and their window films
+  double interpolation = 0.0;  ///< the films of full multigrid's interpolated starts
+  double acceleration = 0.0;   ///< the residuals of the Anderson-mixed states
+  [[nodiscard]] double total() const {
+    return start + relaxation + restriction + coarsest + spike + free_boundary + interpolation + acceleration;
+  }
+  /// Every part times `factor` (node-sweeps to sweeps of a grid: 1/nodes).
+  [[nodiscard]] EhlWork scaled(double factor) const {
+    return {start * factor,  relaxation * factor,    restriction * factor,   coarsest * factor,
+            spike * factor, free_boundary * factor, interpolation * factor, acceleration * factor};
+  }
+};
+
 /// converged and message: model::SolveStatus.
 struct EhlResult : model::SolveStatus {
   // Dimensionless solution on the finest grid.
@@ -147,6 +168,10 @@ struct EhlResult : model::SolveStatus {
   int cycles = 0;           ///< cycles on the finest grid after full multigrid
   double work_units = 0.0;  ///< every relaxation, restriction, local and coarsest solve of every stage, in finest-grid sweeps
   double work_units_at_error = std::numeric_limits<double>::quiet_NaN();  ///< WU when the stop rule held
+  EhlWork work_by_part;     ///< work_units by the part of the method that did it
+  /// The WU of the cycles after each level's full-multigrid cycle: what the stop rule's
+  /// iterations cost on top of full multigrid with one cycle a level (all of a warm start's work).
+  double work_units_iterating = 0.0;
   double convergence_factor = std::numeric_limits<double>::quiet_NaN();   ///< mean per-cycle factor of the residual
   std::vector<double> residual_history;    ///< scaled Reynolds residual per cycle
   std::vector<double> force_history;       ///< |∫P dX − F|/F per cycle
