@@ -339,6 +339,47 @@ const RegisterCheck smoothing(CheckSpec{
       return CheckValue{worst, 0.1, {{"M_L", points}, {"factors", factors}, {"work_units", work}}};
     }});
 
+constexpr Point work_points[] = {{10, 0}, {20, 10}, {10, 17.5}};
+constexpr int work_grids[] = {257, 1025, 4097, 16385};
+
+/// The benchmark's steady solves (BM_EhlSteadySolve*) at the default settings: the largest
+/// work, and each solve's work by part and the stop rule's share (EhlResult::work_by_part).
+CheckValue work_to_error() {
+  double largest = 0.0;
+  nlohmann::json solves = nlohmann::json::array();
+  for (const auto& pt : work_points)
+    for (const int n : work_grids) {
+      const LineContactProblem p(LineContactData::from_moes(pt.M, pt.L));
+      EhlOptions o;
+      o.nodes = n;
+      const auto r = LineContactSolver(p, o).solve();
+      const EhlWork& w = r.work_by_part;
+      largest = std::max(largest, r.work_units);
+      solves.push_back({pt.M, pt.L, n, r.work_units, r.work_units_iterating, w.start, w.relaxation, w.restriction,
+                        w.coarsest, w.spike, w.free_boundary, w.interpolation, w.acceleration});
+    }
+  return CheckValue{largest, 0.0,
+                    {{"columns", "M, L, nodes, WU, of them after full multigrid's cycles, then by part: start, "
+                                 "relaxation, restriction, coarsest, spike, free boundary, interpolation, "
+                                 "acceleration"},
+                     {"solves", solves}}};
+}
+
+// Issue 19's target, not met: recorded as missed at the figure reached (thirtieth session), so
+// that the report says so and a change of that figure by more than 5 % either way fails until
+// it is recorded anew. Full multigrid with one cycle a level takes 16–19 WU on 4097–16385 nodes;
+// the stop rule's further cycles 13–34 (docs/ehl-model.md, "Thirtieth session").
+const RegisterCheck work_target(CheckSpec{
+    .id = "ehl.multigrid.work_to_error", .section = section, .solver = solver,
+    .reference = "issue 19: at most 20 work units to the discretisation error at every N",
+    .quantity = "largest work of the default solve at (M, L) = (10, 0), (20, 10), (10, 17.5) on 257, 1025, 4097 "
+                "and 16385 nodes",
+    .unit = "WU", .tolerance = {20.0, 0},
+    .justification = "the issue's bound: 0 ± 20 WU. Counted in sweeps of the finest grid, every level and stage "
+                     "included (restriction as a sweep of the coarse grid, dense steps by their flops)",
+    .tier = Tier::fast, .run = [](const CheckContext&) { return work_to_error(); },
+    .recorded = 72.76, .recorded_tolerance = 0.05});
+
 }  // namespace
 
 GridSeries grid_series(double M, double L, const std::vector<int>& nodes) {
