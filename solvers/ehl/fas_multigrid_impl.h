@@ -349,7 +349,11 @@ class FasMultigrid::Impl {
   /// the W-cycle's factor 0.25 → 0.12 with it). Expects the film current for P (a
   /// relaxation leaves it so); leaves it current on the returned window only (the step after
   /// it brings the rest up to date: a whole-grid update here cost ~1 of a visit's ~6 sweeps).
+  /// Without piezoviscosity there is no spike (it is ε's collapse by e^{−ᾱP} at the outlet):
+  /// nothing is solved and the range is the pressure maximum's node alone.
   NodeRange relax_spike(Level& l);
+  /// The viscosity rises with pressure, so the film has a Barus spike at the outlet.
+  [[nodiscard]] bool piezoviscous() const;
   /// The spike window's half-width, spike_half_width·b, in the grid's unit X = x/ℓ: ℓ = b in
   /// Hertzian scaling, ℓ = √(2RH_Martin) ≈ 1.39b/M in rigid scaling (M < 3). Taken in ℓ, the
   /// window was 0.035b at M = 2 and its edge cut the zone past the spike where ε rises from
