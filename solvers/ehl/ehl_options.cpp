@@ -41,7 +41,7 @@ model::OptionTable<EhlOptions> make_tuning_table() {
            {.description = "largest |d ln eps| of one change of P"});
   t.number("spike_half_width", &EhlOptions::spike_half_width, Range{0.0, 1.0, true, false},
            {.description = "half-width of the window around the pressure spike solved by local Newton, in Hertzian "
-                           "half-widths (at least 4 nodes)"});
+                           "half-widths (at least 4 nodes); none without piezoviscosity, where there is no spike"});
   t.integer("free_boundary_sweeps", &EhlOptions::free_boundary_sweeps, 0, 20,
             {.description = "extra sweeps over the outlet window after each cycle"});
   t.integer("free_boundary_window", &EhlOptions::free_boundary_window, 1, 256,
