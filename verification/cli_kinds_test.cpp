@@ -141,6 +141,14 @@ TEST(Cli, EhlTransientRunsAndValidates) {
   EXPECT_EQ(r["steps"]["h_min_m"].size(), 9u);
   for (const char* point : {"A", "B", "C", "D", "E"}) EXPECT_TRUE(r["profiles"].contains(point)) << point;
   EXPECT_GT(r["p_max_Pa"].get<double>(), r["reference"]["hertz_pressure_Pa"].get<double>() * 0.8);
+  // The steps' work by part adds up to their work units; the spike and the start did some.
+  const auto& work = r["diagnostics"];
+  double parts = 0.0;
+  for (const auto& [part, wu] : work["work_units_by_part"].items()) parts += wu.get<double>();
+  EXPECT_NEAR(parts, work["work_units"].get<double>(), 1e-9 * work["work_units"].get<double>());
+  EXPECT_GT(work["work_units_by_part"]["spike"].get<double>(), 0.0);
+  EXPECT_GT(work["work_units_by_part"]["start"].get<double>(), 0.0);
+  EXPECT_LT(work["work_units_iterating"].get<double>(), work["work_units"].get<double>());
 
   expect_patches_refused(small, {
       {R"("time_steps": 2)", "time_steps = 2: allowed range is [4, 100000]"},

@@ -53,12 +53,6 @@ struct EhlLineCase {
   }
 };
 
-json work_by_part_json(const ehl::EhlWork& w) {
-  return {{"start", w.start},   {"relaxation", w.relaxation},       {"restriction", w.restriction},
-          {"coarsest", w.coarsest}, {"spike", w.spike},             {"free_boundary", w.free_boundary},
-          {"interpolation", w.interpolation}, {"acceleration", w.acceleration}};
-}
-
 json result_json(const ehl::LineContactProblem& p, const ehl::EhlResult& r) {
   const auto& d = p.data();
   const double to_moes = 1.0 / d.moes_film_scale();

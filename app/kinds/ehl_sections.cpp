@@ -20,6 +20,12 @@ std::string withheld_friction_note(double mu, const std::string& whose) {
                      whose.empty() ? "the " : whose + " ", mu);
 }
 
+nlohmann::json work_by_part_json(const ehl::EhlWork& w) {
+  return {{"start", w.start},       {"relaxation", w.relaxation},       {"restriction", w.restriction},
+          {"coarsest", w.coarsest}, {"spike", w.spike},                 {"free_boundary", w.free_boundary},
+          {"interpolation", w.interpolation}, {"acceleration", w.acceleration}};
+}
+
 nlohmann::json finite_vector(const std::vector<double>& v, double scale) {
   nlohmann::json out = nlohmann::json::array();
   for (double x : v) out.push_back(finite_or_null(x * scale));

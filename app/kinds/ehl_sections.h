@@ -73,6 +73,8 @@ void throw_unless_converged(const Result& r, const nlohmann::json& out) {
 /// Non-finite numbers become null.
 nlohmann::json finite_or_null(double v);
 nlohmann::json finite_vector(const std::vector<double>& v, double scale = 1.0);
+/// A solve's work by part (ehl::EhlWork), keyed by the parts' names.
+nlohmann::json work_by_part_json(const ehl::EhlWork& w);
 
 /// Whether a Newtonian friction coefficient can be given: |μ| ≤ 1. A liquid film carries no
 /// shear force above the normal load; a Newtonian traction beyond it (high slide-to-roll with a

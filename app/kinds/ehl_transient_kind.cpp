@@ -60,7 +60,9 @@ json result_json(const ehl::TransientMeshResult& r) {
       {"diagnostics", {{"converged", r.converged}, {"failed_step", r.failed_step},
                        {"failed_residual_history", finite_vector(r.failed_residual_history)},
                        {"failed_force_balance_history", finite_vector(r.failed_force_history)},
-                       {"total_cycles", r.total_cycles}, {"work_units", r.work_units}, {"seconds", r.seconds}}},
+                       {"total_cycles", r.total_cycles}, {"work_units", r.work_units},
+                       {"work_units_by_part", work_by_part_json(r.work_by_part)},
+                       {"work_units_iterating", r.work_units_iterating}, {"seconds", r.seconds}}},
   };
 }
 

@@ -141,6 +141,13 @@ struct EhlWork {
   [[nodiscard]] double total() const {
     return start + relaxation + restriction + coarsest + spike + free_boundary + interpolation + acceleration;
   }
+  /// Part by part: the work of several solves on one grid (a transient's steps).
+  EhlWork& operator+=(const EhlWork& o) {
+    start += o.start, relaxation += o.relaxation, restriction += o.restriction, coarsest += o.coarsest;
+    spike += o.spike, free_boundary += o.free_boundary, interpolation += o.interpolation;
+    acceleration += o.acceleration;
+    return *this;
+  }
   /// Every part times `factor` (node-sweeps to sweeps of a grid: 1/nodes).
   [[nodiscard]] EhlWork scaled(double factor) const {
     return {start * factor,  relaxation * factor,    restriction * factor,   coarsest * factor,

@@ -140,6 +140,8 @@ TransientMeshResult TransientMeshEhl::run() const {
     auto r = mg.solve();
     out.total_cycles += r.cycles;
     out.work_units += r.work_units;
+    out.work_by_part += r.work_by_part;
+    out.work_units_iterating += r.work_units_iterating;
     if (!r.converged) {
       out.failed_step = n;
       out.failed_residual_history = r.residual_history;

@@ -75,6 +75,8 @@ struct TransientMeshResult : model::SolveStatus {
   std::vector<double> failed_force_history;  ///< |∫P dX − F|/F per cycle of that step
   int total_cycles = 0;
   double work_units = 0.0;
+  EhlWork work_by_part;               ///< work_units by part, summed over the steps
+  double work_units_iterating = 0.0;  ///< of it, the cycles after the steps' full-multigrid cycles
   double seconds = 0.0;
 
   [[nodiscard]] std::string summary() const;
