@@ -114,6 +114,10 @@ double FasMultigrid::Impl::coarsest_merit(Level& l) {
 void FasMultigrid::Impl::start_on_coarsest() {
   Level& l = *levels_.front();
   make_finest(l);
+  if (!state_.nearby.P.empty()) {
+    start_from_nearby(l);
+    return;
+  }
   initial_guess(l);
   const double exponent_at_hertz = problem_.log_viscosity(problem_.hertz_pressure() / problem_.pressure_scale());
   const int stages = std::max(1, static_cast<int>(std::ceil(exponent_at_hertz / homotopy_step)));
@@ -123,6 +127,16 @@ void FasMultigrid::Impl::start_on_coarsest() {
     solve_coarsest(l, coarsest_steps_per_stage, s == stages ? coarsest_tolerance : homotopy_tolerance);
   }
   viscosity_exponent_ = 1.0;
+  starting_ = false;
+}
+
+void FasMultigrid::Impl::start_from_nearby(Level& l) {
+  const WarmStart& nearby = state_.nearby;
+  const std::size_t stride = (levels_.back()->n - 1) / (l.n - 1);
+  for (std::size_t i = 0; i < l.n; ++i) l.P[i] = nearby.P[i * stride];
+  H0_ = nearby.H0;
+  starting_ = true;
+  solve_coarsest(l, coarsest_steps_per_stage, coarsest_tolerance);
   starting_ = false;
 }
 

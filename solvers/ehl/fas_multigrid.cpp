@@ -30,6 +30,8 @@ FasMultigrid::Impl::Impl(const LineContactProblem& problem, const EhlOptions& o,
     if (o_.nodes > 0) levels = levels_for_finest(static_cast<std::size_t>(o_.nodes));
     for (int k = 0; k < levels; ++k) add_level();
   }
+  if (!state_.nearby.P.empty() && state_.nearby.P.size() != levels_.back()->n)
+    throw std::invalid_argument("ContactState::nearby must hold the finest grid");
   inject_fields();
 }
 

@@ -17,6 +17,12 @@
 
 namespace gearbench::ehl {
 
+/// A previous solution to start from instead of full multigrid (same finest grid).
+struct WarmStart {
+  std::vector<double> P;
+  double H0 = 0.0;
+};
+
 struct ContactState {
   double curvature = 1.0;   ///< κ = R_ref/R
   double speed = 1.0;       ///< υ = ū/ū_ref
@@ -28,14 +34,15 @@ struct ContactState {
   /// ρ̄/η̄ and ρ̄ at the same pressure. Frozen during a solve; coarse grids inject them.
   /// Empty: isothermal (all factors 1).
   std::vector<double> flow_factor, wedge_factor;
+  /// The solution of a nearby contact on the finest grid (the previous time step's): full
+  /// multigrid's start on the coarsest grid is injected from it and solved by Newton at the full
+  /// viscosity, without the homotopy in the piezoviscous exponent that the Hertzian guess needs.
+  /// Empty P: that cold start.
+  WarmStart nearby;
   /// Whether the state carries fields on the finest grid (which then must be fixed).
-  [[nodiscard]] bool has_fields() const { return !rho_h_old.empty() || !flow_factor.empty() || !wedge_factor.empty(); }
-};
-
-/// A previous solution to start from instead of full multigrid (same finest grid).
-struct WarmStart {
-  std::vector<double> P;
-  double H0 = 0.0;
+  [[nodiscard]] bool has_fields() const {
+    return !rho_h_old.empty() || !flow_factor.empty() || !wedge_factor.empty() || !nearby.P.empty();
+  }
 };
 
 class FasMultigrid {

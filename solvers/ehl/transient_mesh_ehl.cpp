@@ -133,9 +133,11 @@ TransientMeshResult TransientMeshEhl::run() const {
   // like any other, at 454 WU a step over seed 004's 200 against ~400 for the warm start's
   // four cycles (docs/research/ehl-multigrid-rebuild.md, eleventh session).
   std::vector<double> rho_h_old;
+  WarmStart nearby;  // the previous step's solution: the next step's start on the coarsest grid
   for (int n = 0; n <= options_.steps; ++n) {
     Instant in = instant(n);
     in.state.rho_h_old = rho_h_old;
+    in.state.nearby = nearby;
     FasMultigrid mg(problem, options_.grid, in.state);
     auto r = mg.solve();
     out.total_cycles += r.cycles;
@@ -154,6 +156,7 @@ TransientMeshResult TransientMeshEhl::run() const {
       break;
     }
     rho_h_old = mg.rho_h();
+    nearby = WarmStart{r.P, r.H0};
     auto& st = in.step;
     st.h_central = r.h_central;
     st.h_min = r.h_min;
