@@ -21,7 +21,7 @@ void FasMultigrid::Impl::solve_coarsest(Level& l, int steps, double tolerance, d
     if (!kept && !factorize_coarsest(l, c, std::move(held))) break;
     const CoarsestStep step = coarsest_newton_.step(residual, l.g - integral(l));
     coarsest_sweeps() += coarsest_newton_.dense() ? dense_solve_cost * std::pow(static_cast<double>(l.n), 2)
-                                             : krylov_solve_cost(coarsest_newton_.jacobian(), step.iterations);
+                                                  : krylov_solve_cost(coarsest_newton_.jacobian(), step.iterations);
     // Backtracking: the largest of 1, ½, ¼, … that lowers the merit; none does: the solve
     // keeps its last iterate (strict descent: a Newton step on a live coarse grid can
     // otherwise leave the region where its problem is meaningful, eighth session).
@@ -75,7 +75,7 @@ bool FasMultigrid::Impl::factorize_coarsest(Level& l, const ReynoldsCoefficients
     const auto& J = coarsest_newton_.jacobian();
     coarsest_sweeps() += coarsest_newton_.dense()
                              ? dense_step_cost * std::pow(static_cast<double>(l.n), 3) + J.dense_cost() / multiply_adds_per_sweep
-                        : BandPreconditioner::factorize_cost(J) / multiply_adds_per_sweep;
+                             : BandPreconditioner::factorize_cost(J) / multiply_adds_per_sweep;
   }
   if (info != StepInfo::success) fail_on_coarsest(l, info);
   return info == StepInfo::success;
@@ -114,20 +114,23 @@ double FasMultigrid::Impl::coarsest_merit(Level& l) {
 void FasMultigrid::Impl::start_on_coarsest() {
   Level& l = *levels_.front();
   make_finest(l);
-  if (!state_.nearby.P.empty()) {
+  starting_ = true;
+  if (state_.nearby.P.empty())
+    start_by_homotopy(l);
+  else
     start_from_nearby(l);
-    return;
-  }
+  starting_ = false;
+}
+
+void FasMultigrid::Impl::start_by_homotopy(Level& l) {
   initial_guess(l);
   const double exponent_at_hertz = problem_.log_viscosity(problem_.hertz_pressure() / problem_.pressure_scale());
   const int stages = std::max(1, static_cast<int>(std::ceil(exponent_at_hertz / homotopy_step)));
-  starting_ = true;
   for (int s = 0; s <= stages && failure_.empty(); ++s) {
     viscosity_exponent_ = static_cast<double>(s) / stages;
     solve_coarsest(l, coarsest_steps_per_stage, s == stages ? coarsest_tolerance : homotopy_tolerance);
   }
   viscosity_exponent_ = 1.0;
-  starting_ = false;
 }
 
 void FasMultigrid::Impl::start_from_nearby(Level& l) {
@@ -135,9 +138,7 @@ void FasMultigrid::Impl::start_from_nearby(Level& l) {
   const std::size_t stride = (levels_.back()->n - 1) / (l.n - 1);
   for (std::size_t i = 0; i < l.n; ++i) l.P[i] = nearby.P[i * stride];
   H0_ = nearby.H0;
-  starting_ = true;
   solve_coarsest(l, coarsest_steps_per_stage, coarsest_tolerance);
-  starting_ = false;
 }
 
 void FasMultigrid::Impl::initial_guess(Level& l) {

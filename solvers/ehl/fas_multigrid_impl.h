@@ -402,12 +402,14 @@ class FasMultigrid::Impl {
   /// and the merit does not count.
   [[nodiscard]] std::vector<double> coarsest_residuals(const Level& l) const;
 
-  /// The start on the coarsest grid: the Hertzian guess, then Newton in (P, H0) through a
-  /// homotopy in the piezoviscous exponent (η̄^s, s from 0 to 1 in steps that raise ln η̄ at
-  /// the Hertz pressure by at most 2), so that the first solve is isoviscous and each next
-  /// one starts close to its solution. It costs a few dense solves on the coarsest grid.
-  /// From a nearby contact's solution (ContactState::nearby) it is start_from_nearby instead.
+  /// The start on the coarsest grid, its work counted as the start's: start_from_nearby from a
+  /// nearby contact's solution (ContactState::nearby), start_by_homotopy without one.
   void start_on_coarsest();
+  /// The Hertzian guess, then Newton in (P, H0) through a homotopy in the piezoviscous exponent
+  /// (η̄^s, s from 0 to 1 in steps that raise ln η̄ at the Hertz pressure by at most homotopy_step), so that
+  /// the first solve is isoviscous and each next one starts close to its solution. It costs a
+  /// few dense solves on the coarsest grid.
+  void start_by_homotopy(Level& l);
   /// The nearby solution injected into the coarsest grid, and Newton in (P, H0) from it at the
   /// full viscosity: a neighbouring time step's pressure is within Newton's reach where the
   /// Hertzian guess is not. Seed 004's 201 steps (thirtieth session): the start 7.6 → 3.8 WU a
