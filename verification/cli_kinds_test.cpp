@@ -17,6 +17,15 @@ namespace {
 using nlohmann::json;
 using namespace gearbench::testing_support;
 
+/// A result's work by part adds up to its work units, and the coarsest grid's start did some.
+void expect_work_by_part_adds_up(const json& diagnostics) {
+  const double total = diagnostics["work_units"].get<double>();
+  double parts = 0.0;
+  for (const auto& [part, wu] : diagnostics["work_units_by_part"].items()) parts += wu.get<double>();
+  EXPECT_NEAR(parts, total, 1e-9 * total);
+  EXPECT_GT(diagnostics["work_units_by_part"]["start"].get<double>(), 0.0);
+}
+
 TEST(Cli, EhlLineRunsAndReportsNonConvergence) {
   const auto o = run_gearbench("run " GEARBENCH_SOURCE_DIR "/cases/ehl_moes_M20_L10.json");
   ASSERT_EQ(o.exit_code, 0) << o.err;
@@ -143,11 +152,8 @@ TEST(Cli, EhlTransientRunsAndValidates) {
   EXPECT_GT(r["p_max_Pa"].get<double>(), r["reference"]["hertz_pressure_Pa"].get<double>() * 0.8);
   // The steps' work by part adds up to their work units; the spike and the start did some.
   const auto& work = r["diagnostics"];
-  double parts = 0.0;
-  for (const auto& [part, wu] : work["work_units_by_part"].items()) parts += wu.get<double>();
-  EXPECT_NEAR(parts, work["work_units"].get<double>(), 1e-9 * work["work_units"].get<double>());
+  expect_work_by_part_adds_up(work);
   EXPECT_GT(work["work_units_by_part"]["spike"].get<double>(), 0.0);
-  EXPECT_GT(work["work_units_by_part"]["start"].get<double>(), 0.0);
   EXPECT_LT(work["work_units_iterating"].get<double>(), work["work_units"].get<double>());
 
   expect_patches_refused(small, {
@@ -702,6 +708,7 @@ TEST(Cli, ThermalEhlRunsAndValidates) {
   // The stop's tolerances as used (161 nodes: no nested grid, the isothermal estimate).
   EXPECT_GE(r["diagnostics"]["stop"]["film_tolerance_used"].get<double>(), 1e-5);
   EXPECT_GT(r["diagnostics"]["stop"]["h_min_error_estimate"].get<double>(), 0.0);
+  expect_work_by_part_adds_up(r["diagnostics"]);
 
   expect_patches_refused(point, {
       {R"("lubricant": {"nu40_mm2_s": 320})", "give either viscosity_Pa_s"},

@@ -170,6 +170,14 @@ TEST(ThermalLineContact, NestedStartReachesTheSameSolution) {
   EXPECT_NEAR(nested.h_min / cold.h_min, 1.0, 1e-4);
   EXPECT_NEAR(nested.h_central / cold.h_central, 1.0, 1e-4);
   EXPECT_NEAR(nested.friction_coefficient / cold.friction_coefficient, 1.0, 1e-4);
+  // The work of every pressure solve, on both grids, part by part: the parts add up to
+  // work_units, the 81-node grid's isothermal start is among them, and there is more than the
+  // last solve's work.
+  for (const auto* r : {&nested, &cold}) {
+    EXPECT_NEAR(r->work_by_part.total(), r->work_units, 1e-12 * r->work_units);
+    EXPECT_GT(r->work_by_part.start, 0.0);
+    EXPECT_GT(r->work_by_part.relaxation, r->pressure.work_by_part.relaxation);
+  }
 }
 
 // The discretisation-error stop (issue 26: the coupling stops on the multigrid's rule) ends

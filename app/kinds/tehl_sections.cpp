@@ -44,6 +44,7 @@ json thermal_result_json(const ehl::ThermalEhlResult& r, bool fields) {
                        {"temperature_change_history_K", finite_vector(r.temperature_change_history)},
                        {"h_min_history_m", finite_vector(r.h_min_history)},
                        {"pressure_cycles", r.pressure_cycles}, {"work_units", r.work_units},
+                       {"work_units_by_part", work_by_part_json(r.work_by_part)},
                        {"solid_depth_m", r.depth}, {"nodes", r.x.size()},
                        {"film_nodes", r.zeta.size()}, {"solid_nodes", r.solid_depth.size()},
                        {"seconds", r.seconds}}},

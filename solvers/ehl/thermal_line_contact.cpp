@@ -90,7 +90,7 @@ struct ThermalLineContact::NestedStart {
   std::optional<FilmTemperature> field;
   int iterations = 0;               ///< thermal iterations of this grid and its coarser ones
   int pressure_cycles = 0;          ///< multigrid cycles of this grid and its coarser ones
-  double work_units = 0.0;          ///< in this grid's sweeps, its coarser grids' work included
+  EhlWork work;                     ///< in this grid's sweeps, its coarser grids' work included
 };
 
 ThermalEhlResult ThermalLineContact::try_solve() const {
@@ -160,6 +160,11 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
   const LineContactProblem problem(data_);
   ThermalEhlResult r;
   r.rheology = options_.film.rheology;
+  // Every pressure solve's work, part by part; work_units is their sum (the stable key).
+  const auto count_work = [&r](const EhlWork& w) {
+    r.work_by_part += w;
+    r.work_units = r.work_by_part.total();
+  };
   // The isothermal solution: the start without a nested one, and the comparison the finest grid
   // reports. A nested grid below the finest needs neither.
   EhlResult current;
@@ -172,7 +177,7 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
     r.isothermal_p_max = current.p_max;
     r.isothermal_friction_coefficient = current.friction_coefficient;
     r.pressure_cycles = current.cycles;
-    r.work_units = current.work_units;
+    count_work(current.work_by_part);
     if (!current.converged) {  // the start did not converge: a status, not an exception (issue 21)
       r.fail("thermal EHL: the isothermal start did not converge: " + current.message);
       r.pressure = std::move(current);
@@ -209,7 +214,8 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
     EhlResult first = FasMultigrid(problem, inexact(1.0), state).solve(WarmStart{prolong(nested->P, 1), nested->H0});
     r.pressure_cycles += first.cycles + nested->pressure_cycles;
     // A sweep of the grid half as fine costs its share of nodes of one of this grid's.
-    r.work_units += first.work_units + nested->work_units * static_cast<double>(nested->P.size()) / static_cast<double>(n);
+    count_work(first.work_by_part);
+    count_work(nested->work.scaled(static_cast<double>(nested->P.size()) / static_cast<double>(n)));
     r.coarse_grid_iterations = nested->iterations;
     if (!std::isfinite(first.h_min)) {
       r.fail(fmt::format("thermal EHL on {} nodes: the pressure solve from the nested start is not finite", n));
@@ -287,7 +293,7 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
     const bool full_solve = inner.tolerance <= grid.tolerance || end != nullptr;
     EhlResult next = FasMultigrid(problem, inner, state).solve(WarmStart{current.P, current.H0});
     r.pressure_cycles += next.cycles;
-    r.work_units += next.work_units;
+    count_work(next.work_by_part);
     ++r.iterations;
     const double change = largest_change(field.film(), before);
     r.temperature_change_history.push_back(change);
@@ -345,7 +351,7 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
     end->field.emplace(field);
     end->iterations = r.iterations + r.coarse_grid_iterations;
     end->pressure_cycles = r.pressure_cycles;
-    end->work_units = r.work_units;
+    end->work = r.work_by_part;
   }
   r.pressure = std::move(current);
   return r;

@@ -139,6 +139,7 @@ struct ThermalEhlResult : model::SolveStatus {
   std::optional<double> h_min_error_estimate;
   int pressure_cycles = 0;
   double work_units = 0.0;                          ///< multigrid sweeps in this grid's units, all grids
+  EhlWork work_by_part;                             ///< work_units part by part (their sum)
   double depth = 0.0;                               ///< solid depth d [m]
   double seconds = 0.0;
   EhlResult pressure;                               ///< the last multigrid result
