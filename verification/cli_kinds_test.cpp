@@ -142,12 +142,12 @@ TEST(Cli, EhlTransientRunsAndValidates) {
   std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed004_transient_ehl.json");
   const auto seed = json::parse(in);
   auto small = seed;
-  small["time_steps"] = 8;
+  small["time_steps"] = 24;
   small["grid"] = {{"nodes", 161}};
   const auto o = run_gearbench("run " + write_case("ehl_transient_small", small.dump()));
   ASSERT_EQ(o.exit_code, 0) << o.err;
   const auto r = json::parse(o.out);
-  EXPECT_EQ(r["steps"]["h_min_m"].size(), 9u);
+  EXPECT_EQ(r["steps"]["h_min_m"].size(), 25u);
   for (const char* point : {"A", "B", "C", "D", "E"}) EXPECT_TRUE(r["profiles"].contains(point)) << point;
   EXPECT_GT(r["p_max_Pa"].get<double>(), r["reference"]["hertz_pressure_Pa"].get<double>() * 0.8);
   // The steps' work by part adds up to their work units; the spike and the start did some.
@@ -155,6 +155,19 @@ TEST(Cli, EhlTransientRunsAndValidates) {
   expect_work_by_part_adds_up(work);
   EXPECT_GT(work["work_units_by_part"]["spike"].get<double>(), 0.0);
   EXPECT_LT(work["work_units_iterating"].get<double>(), work["work_units"].get<double>());
+  // Each step's work and start: they add up to the diagnostics'. The steady first step and the
+  // first transient one are solved by full multigrid, and at least one later step warm.
+  const auto& series = r["steps"];
+  double step_work = 0.0;
+  int by_full_multigrid = 0;
+  for (std::size_t n = 0; n < series["work_units"].size(); ++n) {
+    step_work += series["work_units"][n].get<double>();
+    by_full_multigrid += series["full_multigrid"][n].get<bool>() ? 1 : 0;
+  }
+  EXPECT_NEAR(step_work, work["work_units"].get<double>(), 1e-9 * step_work);
+  EXPECT_EQ(by_full_multigrid, work["full_multigrid_steps"].get<int>());
+  EXPECT_TRUE(series["full_multigrid"][0].get<bool>() && series["full_multigrid"][1].get<bool>());
+  EXPECT_LT(by_full_multigrid, 25);
 
   expect_patches_refused(small, {
       {R"("time_steps": 2)", "time_steps = 2: allowed range is [4, 100000]"},

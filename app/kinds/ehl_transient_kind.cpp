@@ -20,7 +20,8 @@ json step_series(const ehl::TransientMeshResult& r) {
             {"reduced_radius_m", json::array()}, {"entrainment_m_per_s", json::array()},
             {"sliding_m_per_s", json::array()}, {"load_per_length_N_per_m", json::array()},
             {"hertz_pressure_Pa", json::array()}, {"h_central_m", json::array()}, {"h_min_m", json::array()},
-            {"p_max_Pa", json::array()}, {"cycles", json::array()}};
+            {"p_max_Pa", json::array()}, {"cycles", json::array()},
+            {"work_units", json::array()}, {"full_multigrid", json::array()}};
   for (const auto& st : r.steps) {
     s["time_s"].push_back(st.time);
     s["position_m"].push_back(st.position);
@@ -34,6 +35,8 @@ json step_series(const ehl::TransientMeshResult& r) {
     s["h_min_m"].push_back(finite_or_null(st.h_min));
     s["p_max_Pa"].push_back(finite_or_null(st.p_max));
     s["cycles"].push_back(st.cycles);
+    s["work_units"].push_back(st.work_units);
+    s["full_multigrid"].push_back(st.full_multigrid);
   }
   return s;
 }
@@ -62,7 +65,8 @@ json result_json(const ehl::TransientMeshResult& r) {
                        {"failed_force_balance_history", finite_vector(r.failed_force_history)},
                        {"total_cycles", r.total_cycles}, {"work_units", r.work_units},
                        {"work_units_by_part", work_by_part_json(r.work_by_part)},
-                       {"work_units_iterating", r.work_units_iterating}, {"seconds", r.seconds}}},
+                       {"work_units_iterating", r.work_units_iterating},
+                       {"full_multigrid_steps", r.full_multigrid_steps}, {"seconds", r.seconds}}},
   };
 }
 

@@ -41,7 +41,10 @@ EhlResult FasMultigrid::Impl::solve(const std::optional<WarmStart>& warm) {
   r.scheme = o_.describe();
   if (warm) {
     start_from(*warm);
-    iterate_to_residual(r);
+    if (o_.stop == StopRule::discretisation_error && std::isfinite(warm->error_estimate))
+      iterate_warm_start_to_error(r, warm->error_estimate);
+    else
+      iterate_to_residual(r);
   } else if (o_.single_grid) {
     make_finest(*levels_.back());
     initial_guess(*levels_.back());

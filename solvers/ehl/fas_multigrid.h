@@ -9,6 +9,7 @@
 //   H = H0 + κ·X²/2 − (D/π)∫ln|X − X'|P dX',
 //   d/dX(ε dP/dX) − υ·d(ρ̄H)/dX − (ρ̄H − (ρ̄H)_old)/ΔT = 0,   ∫P dX = F,
 // with κ = R_ref/R, υ = ū/ū_ref, T = t·ū_ref/ℓ and implicit Euler in time.
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -21,6 +22,10 @@ namespace gearbench::ehl {
 struct WarmStart {
   std::vector<double> P;
   double H0 = 0.0;
+  /// The relative discretisation-error estimate of a nearby solution on this grid (a previous
+  /// time step's, from its full multigrid). Given, a warm solve under the error rule stops at
+  /// error_fraction of it; none (NaN), or under the residual rule, at grid.tolerance.
+  double error_estimate = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct ContactState {

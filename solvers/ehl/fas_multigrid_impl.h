@@ -501,6 +501,10 @@ class FasMultigrid::Impl {
 
   /// Cycles until the scaled residual and the force balance meet the tolerance.
   void iterate_to_residual(EhlResult& r);
+  /// A warm start's cycles on the finest grid to iterate_to_error's rule, at the nearby
+  /// solution's estimate (WarmStart::error_estimate): the finest grid is the only level, and
+  /// its first cycle plays full multigrid's.
+  void iterate_warm_start_to_error(EhlResult& r, double estimate);
 
   // --- acceleration of the cycles (fas_acceleration.cpp) ------------------------------
   /// Anderson acceleration of a level's cycles (EhlOptions::acceleration_depth): a cycle is a

@@ -45,6 +45,10 @@ struct TransientMeshStep {
   double hertz_pressure = 0.0;    ///< p_h of the instantaneous steady Hertz contact [Pa]
   int cycles = 0;
   double residual = 0.0;          ///< final scaled Reynolds residual
+  double work_units = 0.0;        ///< this step's, in sweeps of its finest grid
+  /// Solved by full multigrid (the first steps, and where the contact moved from the last one
+  /// solved so), else warm from the previous steps with that step's error estimate.
+  bool full_multigrid = false;
 };
 
 /// Pressure and film at a named point of the path (A, B, C, D, E).
@@ -76,7 +80,8 @@ struct TransientMeshResult : model::SolveStatus {
   int total_cycles = 0;
   double work_units = 0.0;
   EhlWork work_by_part;               ///< work_units by part, summed over the steps
-  double work_units_iterating = 0.0;  ///< of it, the cycles after the steps' full-multigrid cycles
+  double work_units_iterating = 0.0;  ///< of it, the cycles after the steps' full-multigrid cycles (a warm step's all)
+  int full_multigrid_steps = 0;       ///< steps solved by full multigrid (TransientMeshStep)
   double seconds = 0.0;
 
   [[nodiscard]] std::string summary() const;
