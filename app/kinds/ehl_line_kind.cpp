@@ -79,6 +79,7 @@ json result_json(const ehl::LineContactProblem& p, const ehl::EhlResult& r) {
                        {"work_units_by_part", work_by_part_json(r.work_by_part)},
                        {"work_units_iterating", r.work_units_iterating},
                        {"convergence_factor", finite_or_null(r.convergence_factor)},
+                       {"rule_factor", finite_or_null(r.rule_factor)},
                        {"seconds", r.seconds}, {"nodes", r.X.size()},
                        {"scaling", p.hertzian_scaling() ? "hertzian" : "rigid_isoviscous"},
                        {"residual_history", finite_vector(r.residual_history)},

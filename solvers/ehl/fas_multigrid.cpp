@@ -42,7 +42,7 @@ EhlResult FasMultigrid::Impl::solve(const std::optional<WarmStart>& warm) {
   if (warm) {
     start_from(*warm);
     if (o_.stop == StopRule::discretisation_error && std::isfinite(warm->error_estimate))
-      iterate_warm_start_to_error(r, warm->error_estimate);
+      iterate_warm_start_to_error(r, *warm);
     else
       iterate_to_residual(r);
   } else if (o_.single_grid) {

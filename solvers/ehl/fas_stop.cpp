@@ -124,25 +124,29 @@ bool FasMultigrid::Impl::fmg_cycle_reaches_error(EhlResult& r, std::size_t k, do
   // The factor of a multigrid cycle does not depend on the mesh size (measured 0.02–0.04 on
   // 513 … 16385 nodes at (10, 0), twenty-second session): the last coarser level's stands for
   // this one's until a level iterates and measures it anew. Before any has, none is known.
-  if (!(measured_factor_ < 1.0)) return false;
-  Level& l = *levels_[k];
-  const double left = algebraic_error_left(change, measured_factor_);
   // The bound is the estimate the last change alone gives, never above the level's: an estimate
   // that rests on a previous change outside the asymptotic range (a coarser film below zero)
   // does not stand for this level's error ((50, 5) on 513 nodes: 30 % estimated from the
   // 129-node film of −0.009; its one cycle left H_c 1.6 % off).
   const double bound = o_.error_fraction * last_change_estimate(r);
-  const double force = force_balance(l);
-  if (!(left <= bound && force <= bound)) return false;
+  if (!first_cycle_reaches_error(r, *levels_[k], change, measured_factor_, bound)) return false;
   r.cycles = 0;
-  r.residual_history.assign(1, scaled_residual(l));
-  r.force_history.assign(1, force);
-  r.convergence_factor = measured_factor_;
-  r.stop_rule = error_rule(bound);
   accept(r, fmt::format("converged: the full-multigrid cycle on {} nodes changed the figures by {:.2g}; at the "
                         "factor {:.2f} measured on {} nodes that leaves {:.2g}, below {:g} of the "
                         "discretisation-error estimate {:.2g}",
-                        l.n, change, measured_factor_, factor_nodes_, left, o_.error_fraction, r.error_estimate));
+                        levels_[k]->n, change, measured_factor_, factor_nodes_,
+                        algebraic_error_left(change, measured_factor_), o_.error_fraction, r.error_estimate));
+  return true;
+}
+
+bool FasMultigrid::Impl::first_cycle_reaches_error(EhlResult& r, Level& l, double change, double rho, double bound) {
+  if (!(rho < 1.0)) return false;
+  const double force = force_balance(l);
+  if (!(algebraic_error_left(change, rho) <= bound && force <= bound)) return false;
+  r.residual_history.assign(1, scaled_residual(l));
+  r.force_history.assign(1, force);
+  r.convergence_factor = r.rule_factor = rho;
+  r.stop_rule = error_rule(bound);
   return true;
 }
 
@@ -186,7 +190,7 @@ void FasMultigrid::Impl::iterate_to_error(EhlResult& r, std::size_t k, double fm
     const double left = algebraic_error_left(change, rho);
     if (left <= bound && r.force_history.back() <= bound) {
       last_level_factor_ = own_factor;
-      measured_factor_ = rho;
+      measured_factor_ = r.rule_factor = rho;
       factor_nodes_ = fine.n;
       r.stop_rule = error_rule(bound);
       accept(r, fmt::format("converged: the algebraic error left, {:.2g} (per-cycle change {:.2g} at factor {:.2f}), "
@@ -201,22 +205,35 @@ void FasMultigrid::Impl::iterate_to_error(EhlResult& r, std::size_t k, double fm
                         last(r.force_history)));
 }
 
-void FasMultigrid::Impl::iterate_warm_start_to_error(EhlResult& r, double estimate) {
+void FasMultigrid::Impl::iterate_warm_start_to_error(EhlResult& r, const WarmStart& warm) {
   const std::size_t k = levels_.size() - 1;
   Level& fine = *levels_[k];
   record_fmg_level(r, k);  // one level: update_fmg_level keeps the estimate given
-  r.error_estimate = estimate;
+  r.error_estimate = warm.error_estimate;
   // The first cycle stands where full multigrid's would: the rule measures from it. The warm
   // start's own residual is not one of the iteration's: the first cycle turns the data's smooth
   // change into a rough residual of about the same size (seed 004: 0.8 of it, the next cycle
   // 0.15 of that), so a factor measured against it would read the start, not the cycle.
   const Watched start = watched(fine);
   counted_as_iterating([&] { cycle(k); });
-  const double first_residual = scaled_residual(fine), first_force = force_balance(fine);
-  iterate_to_error(r, k, change_of(watched(fine), start));
-  r.cycles += 1;
-  r.residual_history.insert(r.residual_history.begin(), first_residual);
-  r.force_history.insert(r.force_history.begin(), first_force);
+  const double change = change_of(watched(fine), start);
+  const double bound = o_.error_fraction * warm.error_estimate;
+  // As a level's full-multigrid cycle (fmg_cycle_reaches_error), the first cycle is accepted on
+  // the factor the nearby solve's rule took, when that factor is known.
+  if (first_cycle_reaches_error(r, fine, change, warm.rule_factor, bound)) {
+    r.cycles = 1;
+    accept(r, fmt::format("converged: the warm start's first cycle changed the figures by {:.2g}; at the nearby "
+                          "solve's factor {:.2f} that leaves {:.2g}, below {:g} of the carried discretisation-error "
+                          "estimate {:.2g}",
+                          change, warm.rule_factor, algebraic_error_left(change, warm.rule_factor),
+                          o_.error_fraction, warm.error_estimate));
+  } else {
+    const double first_residual = scaled_residual(fine), first_force = force_balance(fine);
+    iterate_to_error(r, k, change);
+    r.cycles += 1;
+    r.residual_history.insert(r.residual_history.begin(), first_residual);
+    r.force_history.insert(r.force_history.begin(), first_force);
+  }
   if (r.converged) r.stop_rule += "; the estimate carried with the warm start, from a nearby solution's full multigrid";
 }
 
@@ -277,6 +294,7 @@ void FasMultigrid::Impl::accept(EhlResult& r, std::string message) {
 
 void FasMultigrid::Impl::reject(EhlResult& r, std::string message) {
   r.converged = false;
+  r.rule_factor = std::numeric_limits<double>::quiet_NaN();  // no rule held
   r.message = std::move(message);
 }
 

@@ -180,13 +180,17 @@ struct EhlResult : model::SolveStatus {
   /// iterations cost on top of full multigrid with one cycle a level (all of a warm start's work).
   double work_units_iterating = 0.0;
   double convergence_factor = std::numeric_limits<double>::quiet_NaN();   ///< mean per-cycle factor of the residual
+  /// The per-cycle factor ρ the error rule took at the stop (the algebraic error left is the last
+  /// change times ρ/(1 − ρ)); NaN under the residual rule.
+  double rule_factor = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> residual_history;    ///< scaled Reynolds residual per cycle
   std::vector<double> force_history;       ///< |∫P dX − F|/F per cycle
   std::vector<double> seconds_per_level;
   double seconds = 0.0;
   /// The solver's own discretisation-error estimate of H_c and H_min (relative): the change
   /// from the next-coarser grid of full multigrid over 2^p − 1 (p = 2). NaN where there is
-  /// none: a warm-started solve (a time step, a thermal iteration) or a single grid.
+  /// none: a single grid, or a warm-started solve without one (a thermal iteration); a warm
+  /// start that carried one (WarmStart::error_estimate, a transient's step) reports it.
   double error_estimate = std::numeric_limits<double>::quiet_NaN();
   /// Relative change of h_min and p_max from the next-coarser grid (NaN: none).
   double h_min_change = std::numeric_limits<double>::quiet_NaN();

@@ -188,7 +188,7 @@ TransientMeshResult TransientMeshEhl::run() const {
     }
     rho_h_old = mg.rho_h();
     before = warm ? previous : WarmStart{};
-    previous = WarmStart{r.P, r.H0, r.error_estimate};
+    previous = WarmStart{r.P, r.H0, r.error_estimate, r.rule_factor};
     auto& st = in.step;
     st.h_central = r.h_central;
     st.h_min = r.h_min;
