@@ -17,6 +17,13 @@ namespace {
 using nlohmann::json;
 using namespace gearbench::testing_support;
 
+/// The sum of a JSON array of numbers.
+double sum_of(const json& values) {
+  double sum = 0.0;
+  for (const auto& v : values) sum += v.get<double>();
+  return sum;
+}
+
 /// A result's work by part adds up to its work units, and the coarsest grid's start did some.
 void expect_work_by_part_adds_up(const json& diagnostics) {
   const double total = diagnostics["work_units"].get<double>();
@@ -158,13 +165,8 @@ TEST(Cli, EhlTransientRunsAndValidates) {
   // Each step's work and start: they add up to the diagnostics'. The steady first step and the
   // first transient one are solved by full multigrid, and at least one later step warm.
   const auto& series = r["steps"];
-  double step_work = 0.0;
-  int by_full_multigrid = 0;
-  for (std::size_t n = 0; n < series["work_units"].size(); ++n) {
-    step_work += series["work_units"][n].get<double>();
-    by_full_multigrid += series["full_multigrid"][n].get<bool>() ? 1 : 0;
-  }
-  EXPECT_NEAR(step_work, work["work_units"].get<double>(), 1e-9 * step_work);
+  const auto by_full_multigrid = std::count(series["full_multigrid"].begin(), series["full_multigrid"].end(), true);
+  EXPECT_NEAR(sum_of(series["work_units"]), work["work_units"].get<double>(), 1e-9 * work["work_units"].get<double>());
   EXPECT_EQ(by_full_multigrid, work["full_multigrid_steps"].get<int>());
   EXPECT_TRUE(series["full_multigrid"][0].get<bool>() && series["full_multigrid"][1].get<bool>());
   EXPECT_LT(by_full_multigrid, 25);
@@ -225,6 +227,10 @@ TEST(Cli, OilFilmStiffnessRunsAndValidates) {
     EXPECT_GT(f.get<double>(), 0.0);
     EXPECT_LT(f.get<double>(), 1.0);
   }
+  // Each position's three solves did work, and the positions' add up to the diagnostics'.
+  for (const auto& wu : r["points"]["work_units"]) EXPECT_GT(wu.get<double>(), 0.0);
+  EXPECT_NEAR(sum_of(r["points"]["work_units"]), r["diagnostics"]["work_units"].get<double>(),
+              1e-9 * r["diagnostics"]["work_units"].get<double>());
   expect_patches_refused(small, {
       {R"("perturbation": 0.5)", "perturbation = 0.5: allowed"},
       {R"("positions": 0)", "positions = 0: allowed range is [1, 10000]"},
@@ -248,7 +254,13 @@ TEST(Cli, OilFilmStiffnessDoubleInvoluteRunsAndValidates) {
     const auto& k = r[form]["instants"]["film_stiffness_N_per_m"];
     ASSERT_EQ(k.size(), 2u) << form;
     for (const auto& v : k) EXPECT_GT(v.get<double>(), 0.0) << form;
+    EXPECT_GT(r[form]["work_units"].get<double>(), 0.0) << form;
+    EXPECT_NEAR(sum_of(r[form]["instants"]["work_units"]), r[form]["work_units"].get<double>(),
+                1e-9 * r[form]["work_units"].get<double>()) << form;
   }
+  EXPECT_NEAR(r["diagnostics"]["work_units"].get<double>(),
+              r["double_involute"]["work_units"].get<double>() + r["involute"]["work_units"].get<double>(),
+              1e-9 * r["diagnostics"]["work_units"].get<double>());
   EXPECT_GT(r["mean_film_stiffness_ratio"].get<double>(), 0.0);
   EXPECT_LT(r["geometry"]["root_zone_m"][1].get<double>(), r["geometry"]["tip_zone_m"][0].get<double>());
   expect_patches_refused(small, {

@@ -24,7 +24,7 @@ json points_json(const ehl::OilFilmStiffnessResult& r) {
             {"oil_film_stiffness_per_length_N_per_m2", json::array()}, {"oil_film_stiffness_N_per_m", json::array()},
             {"pair_stiffness_N_per_m", json::array()}, {"stiffness_with_film_N_per_m", json::array()},
             {"film_compliance_share", json::array()}, {"moes_M", json::array()}, {"moes_L", json::array()},
-            {"film_load_exponent", json::array()}};
+            {"film_load_exponent", json::array()}, {"work_units", json::array()}};
   for (const auto& q : r.points) {
     p["position_m"].push_back(q.position);
     p["load_per_length_N_per_m"].push_back(q.load_per_length);
@@ -41,6 +41,7 @@ json points_json(const ehl::OilFilmStiffnessResult& r) {
     p["moes_M"].push_back(q.moes_M);
     p["moes_L"].push_back(q.moes_L);
     p["film_load_exponent"].push_back(finite_or_null(q.film_load_exponent));
+    p["work_units"].push_back(q.work_units);
   }
   return p;
 }
@@ -50,7 +51,8 @@ json instants_json(const ehl::MeshPeriodOilFilmResult& r) {
             {"load_per_length_N_per_m", json::array()}, {"film_stiffness_N_per_m", json::array()},
             {"pair2_root_length_m", json::array()}, {"pair2_tip_length_m", json::array()},
             {"pair2_film_stiffness_N_per_m", json::array()}, {"pair2_root_radius_m", json::array()},
-            {"pair2_tip_radius_m", json::array()}, {"h_central_min_m", json::array()}, {"pairs", json::array()}};
+            {"pair2_tip_radius_m", json::array()}, {"h_central_min_m", json::array()}, {"pairs", json::array()},
+            {"work_units", json::array()}};
   for (const auto& m : r.instants) {
     p["time_s"].push_back(m.time);
     p["contact_line_length_m"].push_back(m.contact_length);
@@ -63,9 +65,10 @@ json instants_json(const ehl::MeshPeriodOilFilmResult& r) {
     p["pair2_tip_radius_m"].push_back(m.pair2_tip_radius);
     p["h_central_min_m"].push_back(finite_or_null(m.h_central_min));
     p["pairs"].push_back(m.pairs);
+    p["work_units"].push_back(m.work_units);
   }
   return {{"instants", p}, {"mean_film_stiffness_N_per_m", finite_or_null(r.mean_film_stiffness)},
-          {"ehl_solves", r.solves}, {"seconds", r.seconds}};
+          {"ehl_solves", r.solves}, {"work_units", r.work_units}, {"seconds", r.seconds}};
 }
 
 json geometry_json(const geometry::DoubleInvolutePair& pair) {
@@ -157,7 +160,8 @@ json run_double_involute(model::ObjectReader& root, const model::GearCase& gear_
                                  "k_oil = −Δw/Δh_c by a central difference at loads w(1 ± perturbation); a pair's film "
                                  "stiffness is ∫k_oil dl along its contact line",
                                  "involute: the ordinary pair with the same gear data (a zero step)"})},
-          {"diagnostics", {{"seconds", rs.seconds + ro.seconds}, {"ehl_solves", rs.solves + ro.solves}}},
+          {"diagnostics", {{"seconds", rs.seconds + ro.seconds}, {"ehl_solves", rs.solves + ro.solves},
+                           {"work_units", rs.work_units + ro.work_units}}},
           {"options_given", ehl::MeshPeriodOilFilmOptions::table().to_json(options)},
           {"options_used", ehl::MeshPeriodOilFilmOptions::table().to_json(options)}};
   out["converged"] = status.converged;
@@ -190,7 +194,7 @@ json run_oil_film_stiffness(const json& case_json) {
           {"points", points_json(r)},
           {"notes", json::array({"k_oil = −Δw/Δh_c by a central difference at loads w(1 ± perturbation)",
                                  "stiffness_with_film: the pair stiffness and b·k_oil in series"})},
-          {"diagnostics", {{"seconds", r.seconds}}},
+          {"diagnostics", {{"seconds", r.seconds}, {"work_units", r.work_units}}},
           {"options_given", ehl::OilFilmStiffnessOptions::table().to_json(options)},
           {"options_used", ehl::OilFilmStiffnessOptions::table().to_json(options)}};
   add_solve_status(out, r);

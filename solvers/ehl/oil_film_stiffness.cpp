@@ -93,7 +93,7 @@ EhlOptions OilFilmStiffnessOptions::default_grid() {
 }
 
 std::string OilFilmStiffnessResult::summary() const {
-  return fmt::format("{} positions, {:.2f} s", points.size(), seconds);
+  return fmt::format("{} positions, {:.1f} work units, {:.2f} s", points.size(), work_units, seconds);
 }
 
 OilFilmStiffness::OilFilmStiffness(const geometry::GearPairGeometry& geometry,
@@ -168,6 +168,8 @@ OilFilmStiffnessResult OilFilmStiffness::try_solve() const {
     p.moes_L = base.moes_L();
     p.film_load_exponent = std::log(rp.h_dpdx0 / rm.h_dpdx0) / std::log((1.0 + delta) / (1.0 - delta));
     p.cycles = r0.cycles + rp.cycles + rm.cycles;
+    p.work_units = r0.work_units + rp.work_units + rm.work_units;
+    out.work_units += p.work_units;
     out.points.push_back(p);
   } catch (const ConvergenceError& e) {
     out.fail(fmt::format("position {} of {}: {}", i + 1, options_.positions, e.what()));
@@ -182,8 +184,8 @@ OilFilmStiffnessResult OilFilmStiffness::try_solve() const {
 }
 
 std::string MeshPeriodOilFilmResult::summary() const {
-  return fmt::format("{} instants over {:.4g} ms, mean film stiffness {:.4g} N/µm, {} EHL solves, {:.2f} s",
-                     instants.size(), period * 1e3, mean_film_stiffness * 1e-6, solves, seconds);
+  return fmt::format("{} instants over {:.4g} ms, mean film stiffness {:.4g} N/µm, {} EHL solves, {:.1f} work units, "
+                     "{:.2f} s", instants.size(), period * 1e3, mean_film_stiffness * 1e-6, solves, work_units, seconds);
 }
 
 MeshPeriodOilFilm::MeshPeriodOilFilm(const geometry::DoubleInvolutePair& pair, const model::OperatingPoint& operating,
@@ -201,7 +203,8 @@ MeshPeriodOilFilm::FilmPoint MeshPeriodOilFilm::film_at(double s, double load_pe
   d.load_per_length = load_per_length;
   const auto step = solve_load_step(d, options_.grid, options_.perturbation, s);
   // The mean of the two films is h_c(w) to O(δ²) (4e-4 of h_c at δ = 2 %), without a third solve.
-  return {step.stiffness_per_length, 0.5 * (step.plus.h_central + step.minus.h_central)};
+  return {step.stiffness_per_length, 0.5 * (step.plus.h_central + step.minus.h_central),
+          step.plus.work_units + step.minus.work_units};
 }
 
 MeshPeriodOilFilmResult MeshPeriodOilFilm::solve() const {
@@ -239,6 +242,7 @@ MeshPeriodOilFilmResult MeshPeriodOilFilm::try_solve() const {
         const auto f = film_at(p.s_begin, m.load_per_length);
         stiffness = p.length * f.stiffness_per_length;
         m.h_central_min = std::min(m.h_central_min, f.h_central);
+        m.work_units += f.work_units;
         out.solves += 2;
       } else {
         for (std::size_t j = 0; j < table->n; ++j) {
@@ -248,6 +252,7 @@ MeshPeriodOilFilmResult MeshPeriodOilFilm::try_solve() const {
           const auto f = film_at(s, m.load_per_length);
           stiffness += weight * f.stiffness_per_length / std::sin(beta_b);
           m.h_central_min = std::min(m.h_central_min, f.h_central);
+          m.work_units += f.work_units;
           out.solves += 2;
         }
       }
@@ -262,6 +267,7 @@ MeshPeriodOilFilmResult MeshPeriodOilFilm::try_solve() const {
       (p.zone == geometry::ToothZone::root ? m.pair2_root_radius : m.pair2_tip_radius) = radius;
     }
     out.mean_film_stiffness += m.film_stiffness / options_.samples;
+    out.work_units += m.work_units;
     out.instants.push_back(m);
   } catch (const ConvergenceError& e) {
     out.fail(fmt::format("instant {} of {}: {}", i + 1, options_.samples, e.what()));

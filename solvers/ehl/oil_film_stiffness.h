@@ -46,12 +46,14 @@ struct OilFilmPoint {
   /// d ln h_dpdx0 / d ln w from the same solves (Moes' film; compared with his formula).
   double film_load_exponent = 0.0;
   int cycles = 0;                     ///< multigrid cycles of the three solves
+  double work_units = 0.0;            ///< of the three solves, each in sweeps of its finest grid
 };
 
 /// converged and message: model::SolveStatus (the position whose EHL solves failed named).
 struct OilFilmStiffnessResult : model::SolveStatus {
   std::vector<OilFilmPoint> points;
   double face_width = 0.0;
+  double work_units = 0.0;            ///< of every solve (OilFilmPoint::work_units summed)
   double seconds = 0.0;
   [[nodiscard]] std::string summary() const;
 };
@@ -114,6 +116,7 @@ struct MeshInstant {
   double pair2_root_radius = 0.0, pair2_tip_radius = 0.0;
   double h_central_min = 0.0;         ///< thinnest central film of the instant (mean of the ± solves) [m]
   int pairs = 0;                      ///< pairs in contact
+  double work_units = 0.0;            ///< of the instant's solves, each in sweeps of its finest grid
 };
 
 /// converged and message: model::SolveStatus (the instant and position whose EHL solves failed named).
@@ -122,6 +125,7 @@ struct MeshPeriodOilFilmResult : model::SolveStatus {
   double period = 0.0;                ///< [s]
   double mean_film_stiffness = 0.0;   ///< over the instants [N/m]
   int solves = 0;
+  double work_units = 0.0;            ///< of every solve (MeshInstant::work_units summed)
   double seconds = 0.0;
   [[nodiscard]] std::string summary() const;
 };
@@ -142,6 +146,7 @@ class MeshPeriodOilFilm {
   struct FilmPoint {
     double stiffness_per_length = 0.0;  ///< [N/m²]
     double h_central = 0.0;             ///< [m]
+    double work_units = 0.0;            ///< of its two solves
   };
   [[nodiscard]] FilmPoint film_at(double s, double load_per_length) const;
 

@@ -118,12 +118,13 @@ void add_figures(const CheckContext& ctx, reports::Report& report) {
   report.notes.push_back({section, fmt::format(
       "The film is a stiff spring: b·k_oil = {:.0f}–{:.0f} N/µm along the path against {:.0f}–{:.0f} N/µm "
       "for the pair, so it takes {:.2f}–{:.2f} % of the compliance (most where the pair carries half the "
-      "load). {} positions, loads perturbed by ±{:.0f} %, {:.1f} s. The double-involute pair of seed 002 "
+      "load). {} positions, loads perturbed by ±{:.0f} %, {:.0f} work units ({:.0f} a solve), {:.1f} s. The "
+      "double-involute pair of seed 002 "
       "has its own section.",
       std::min_element(k_oil.begin(), k_oil.end())[0] * 1e3, std::max_element(k_oil.begin(), k_oil.end())[0] * 1e3,
       std::min_element(k_pair.begin(), k_pair.end())[0] * 1e3, std::max_element(k_pair.begin(), k_pair.end())[0] * 1e3,
       *std::min_element(share.begin(), share.end()), *std::max_element(share.begin(), share.end()), r.points.size(),
-      100 * o.perturbation, r.seconds)});
+      100 * o.perturbation, r.work_units, r.work_units / (3.0 * static_cast<double>(r.points.size())), r.seconds)});
 }
 
 const RegisterSection oil_film_section(SectionSpec{.id = "oil_film", .tier = Tier::fast, .add = add_figures});
