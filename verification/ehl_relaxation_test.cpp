@@ -388,15 +388,28 @@ TEST(FasMultigrid, WarmStartFromTheSolutionStays) {
 // skips the homotopy of the cold start on the coarsest grid: from the solution at 0.99 of the
 // load, the same answer for about half the start's work. The nearby solution must hold the
 // finest grid.
+/// (20, 10) on 1025 nodes by full multigrid: at 0.99 of the load (a transient's previous step,
+/// `near`) and at the load (`cold`).
+struct NearbyContact {
+  const LineContactProblem p{LineContactData::from_moes(20.0, 10.0)};
+  const EhlOptions o = [] {
+    EhlOptions o;
+    o.nodes = 1025;
+    return o;
+  }();
+  EhlResult near, cold;
+  NearbyContact() {
+    ContactState lighter;
+    lighter.load = 0.99 * p.load();
+    near = FasMultigrid(p, o, lighter).solve();
+    cold = FasMultigrid(p, o, ContactState{}).solve();
+  }
+};
+
 TEST(FasMultigrid, NearbySolutionStartsTheCoarsestGridWithoutTheHomotopy) {
-  const LineContactProblem p(LineContactData::from_moes(20.0, 10.0));
-  EhlOptions o;
-  o.nodes = 1025;
-  ContactState lighter;
-  lighter.load = 0.99 * p.load();
-  const auto near = FasMultigrid(p, o, lighter).solve();
+  const NearbyContact contact;
+  const auto& [p, o, near, cold] = contact;
   ASSERT_TRUE(near.converged);
-  const auto cold = FasMultigrid(p, o, ContactState{}).solve();
   ContactState warm;
   warm.nearby = WarmStart{near.P, near.H0};
   const auto from_near = FasMultigrid(p, o, warm).solve();
@@ -419,14 +432,9 @@ TEST(FasMultigrid, NearbySolutionStartsTheCoarsestGridWithoutTheHomotopy) {
 // cycles, 16.7 WU against 47.4, the films 0.50 of the bound off (thirty-first session). With
 // the factor the nearby rule took, a first cycle that meets the rule at it is accepted.
 TEST(FasMultigrid, WarmStartWithAnEstimateStopsAtTheErrorRule) {
-  const LineContactProblem p(LineContactData::from_moes(20.0, 10.0));
-  EhlOptions o;
-  o.nodes = 1025;
-  ContactState lighter;
-  lighter.load = 0.99 * p.load();
-  const auto near = FasMultigrid(p, o, lighter).solve();
+  const NearbyContact contact;
+  const auto& [p, o, near, cold] = contact;
   ASSERT_TRUE(near.converged);
-  const auto cold = FasMultigrid(p, o, ContactState{}).solve();
   const auto warm = FasMultigrid(p, o, ContactState{}).solve(WarmStart{near.P, near.H0, near.error_estimate});
   ASSERT_TRUE(warm.converged) << warm.message;
   EXPECT_GE(warm.cycles, 2);
