@@ -429,8 +429,8 @@ TEST(FasMultigrid, NearbySolutionStartsTheCoarsestGridWithoutTheHomotopy) {
 // error_fraction × that estimate of the grid's discrete solution, in at least two cycles (the
 // first plays full multigrid's and the rule measures from it), for less work than full
 // multigrid. Without an estimate it stops at the residual tolerance, as before. Measured: 2
-// cycles, 16.7 WU against 47.4, the films 0.50 of the bound off (thirty-first session). With
-// the factor the nearby rule took, a first cycle that meets the rule at it is accepted.
+// cycles, 16.7 WU against 47.4, the films 0.50 of the bound off (thirty-first session). The
+// factor the nearby rule took is the floor of the warm solve's.
 TEST(FasMultigrid, WarmStartWithAnEstimateStopsAtTheErrorRule) {
   const NearbyContact contact;
   const auto& [p, o, near, cold] = contact;
@@ -452,14 +452,15 @@ TEST(FasMultigrid, WarmStartWithAnEstimateStopsAtTheErrorRule) {
   const auto to_residual = FasMultigrid(p, o, ContactState{}).solve(WarmStart{near.P, near.H0});
   EXPECT_EQ(to_residual.stop_rule.find("carried"), std::string::npos);
   EXPECT_TRUE(std::isnan(to_residual.rule_factor));
-  // With the factor its rule took, a start at the answer is accepted on its first cycle.
+  // With the factor its rule took, that factor is the floor of the next warm solve's, whose
+  // first cycle is never accepted alone.
   ASSERT_GT(warm.rule_factor, 0.0);
   ASSERT_LT(warm.rule_factor, 1.0);
   const auto again =
       FasMultigrid(p, o, ContactState{}).solve(WarmStart{warm.P, warm.H0, warm.error_estimate, warm.rule_factor});
   ASSERT_TRUE(again.converged) << again.message;
-  EXPECT_EQ(again.cycles, 1);
-  EXPECT_DOUBLE_EQ(again.rule_factor, warm.rule_factor);
+  EXPECT_GE(again.cycles, 2);
+  EXPECT_GE(again.rule_factor, warm.rule_factor);
   EXPECT_NEAR(again.h_central / s.h_central, 1.0, o.error_fraction * warm.error_estimate);
   EXPECT_NEAR(again.h_min / s.h_min, 1.0, o.error_fraction * warm.error_estimate);
 }

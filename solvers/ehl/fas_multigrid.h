@@ -26,8 +26,8 @@ struct WarmStart {
   /// time step's, from its full multigrid). Given, a warm solve under the error rule stops at
   /// error_fraction of it; none (NaN), or under the residual rule, at grid.tolerance.
   double error_estimate = std::numeric_limits<double>::quiet_NaN();
-  /// The per-cycle factor the nearby solve's rule took (EhlResult::rule_factor). Given with the
-  /// estimate, the warm solve's first cycle is accepted if it meets the rule at this factor.
+  /// The per-cycle factor the nearby solve's rule took (EhlResult::rule_factor): with the
+  /// estimate, the floor of the warm solve's factor.
   double rule_factor = std::numeric_limits<double>::quiet_NaN();
 };
 

@@ -491,10 +491,6 @@ class FasMultigrid::Impl {
   /// the interpolated start, meets iterate_to_error's rule at the factor measured on the last
   /// coarser level that iterated. Accepts the level (r) if so.
   [[nodiscard]] bool fmg_cycle_reaches_error(EhlResult& r, std::size_t k, double change);
-  /// Whether a first cycle on level l that changed the figures by `change` leaves an algebraic
-  /// error and a force balance below `bound` at the factor ρ; if so, the result's histories,
-  /// factor and rule are set (the caller accepts it).
-  [[nodiscard]] bool first_cycle_reaches_error(EhlResult& r, Level& l, double change, double rho, double bound);
   /// The discretisation error the last full-multigrid change alone gives, δ_k/(2^p − 1) for
   /// H_c and H_min: at most the level's estimate (level_error_estimate).
   [[nodiscard]] static double last_change_estimate(const EhlResult& r);
@@ -507,7 +503,7 @@ class FasMultigrid::Impl {
   void iterate_to_residual(EhlResult& r);
   /// A warm start's cycles on the finest grid to iterate_to_error's rule, at the nearby
   /// solution's estimate (WarmStart::error_estimate): the finest grid is the only level, and
-  /// its first cycle plays full multigrid's, accepted at the nearby solve's factor if it may be.
+  /// its first cycle plays full multigrid's, the nearby solve's factor the floor of its own.
   void iterate_warm_start_to_error(EhlResult& r, const WarmStart& warm);
 
   // --- acceleration of the cycles (fas_acceleration.cpp) ------------------------------
