@@ -154,11 +154,12 @@ TransientMeshResult TransientMeshEhl::run() const {
   // near that step's (within_carry); else, and always under the residual rule, by full
   // multigrid, its coarsest grid started from the previous step. The previous step's ρ̄H is data
   // of the squeeze term on every grid. Seed 004 (641 nodes, 201 steps; thirty-first session):
-  // 45.5 → 18.5 WU a step, 6 steps by full multigrid; against every step solved to a residual
-  // of 1e-10, the largest difference in H_c, H_min and p_max 8.7e-4, 6.6e-4 and 8.1e-4 (full
-  // multigrid at every step: 8.7e-4, 8.7e-4, 2.4e-3), the mean 4× smaller. (Eleventh session: a
-  // warm start under the residual rule stalled where the load jumps, at B; with full multigrid
-  // at each step the old solver then spent 454 WU a step.)
+  // 45.5 → 19.1 WU a step, 7 steps by full multigrid; against every step solved to a residual
+  // of 1e-10, the largest difference in H_c, H_min and p_max 8.7e-4, 6.6e-4 and 8.5e-4 (full
+  // multigrid at every step: 8.7e-4, 8.7e-4, 2.4e-3); over 161–1281 nodes, 50–400 steps and both
+  // load sharings docs/ehl-model.md has the table. (Eleventh session: a warm start under the
+  // residual rule stalled where the load jumps, at B; with full multigrid at each step the old
+  // solver then spent 454 WU a step.)
   const bool error_rule = options_.grid.stop == StopRule::discretisation_error;
   std::vector<double> rho_h_old;
   WarmStart previous, before;  // the last two steps' solutions; `before` empty across a jump
