@@ -172,7 +172,7 @@ struct EhlResult : model::SolveStatus {
   std::string scheme;       ///< the options used (EhlOptions::describe)
   std::string stop_rule;    ///< the rule that accepted (or would have accepted) the solve
   int levels = 0;           ///< grid levels used
-  int cycles = 0;           ///< cycles on the finest grid after full multigrid
+  int cycles = 0;           ///< cycles on the finest grid after full multigrid (a warm start's: all)
   double work_units = 0.0;  ///< every relaxation, restriction, local and coarsest solve of every stage, in finest-grid sweeps
   double work_units_at_error = std::numeric_limits<double>::quiet_NaN();  ///< WU when the stop rule held
   EhlWork work_by_part;     ///< work_units by the part of the method that did it
