@@ -393,9 +393,9 @@ TEST(FasMultigrid, WarmStartFromTheSolutionStays) {
 struct NearbyContact {
   const LineContactProblem p{LineContactData::from_moes(20.0, 10.0)};
   const EhlOptions o = [] {
-    EhlOptions o;
-    o.nodes = 1025;
-    return o;
+    EhlOptions options;
+    options.nodes = 1025;
+    return options;
   }();
   EhlResult near, cold;
   NearbyContact() {
@@ -439,6 +439,10 @@ TEST(FasMultigrid, WarmStartWithAnEstimateStopsAtTheErrorRule) {
   ASSERT_TRUE(warm.converged) << warm.message;
   EXPECT_GE(warm.cycles, 2);
   EXPECT_EQ(warm.residual_history.size(), static_cast<std::size_t>(warm.cycles));
+  // Its factor is the mean over the history it reports, the first cycle's residual included.
+  const auto& history = warm.residual_history;
+  EXPECT_NEAR(warm.convergence_factor,
+              std::pow(history.back() / history.front(), 1.0 / static_cast<double>(history.size() - 1)), 1e-12);
   EXPECT_DOUBLE_EQ(warm.error_estimate, near.error_estimate);
   EXPECT_NE(warm.stop_rule.find("carried with the warm start"), std::string::npos);
   EXPECT_LT(warm.work_units, 0.75 * cold.work_units);

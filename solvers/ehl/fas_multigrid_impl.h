@@ -543,7 +543,12 @@ class FasMultigrid::Impl {
   /// vector operations are not counted (as correct()'s are not).
   void visit_coarse_twice(std::size_t k);
 
+  /// Appends the fine grid's scaled residual and force balance to the histories, and sets
+  /// convergence_factor from them (mean_factor).
   void record_residual(EhlResult& r, Level& fine);
+  /// The geometric mean of the per-cycle factors over a residual history, (last/first)^(1/(n − 1));
+  /// NaN with fewer than two entries. EhlResult::convergence_factor is this of its history.
+  [[nodiscard]] static double mean_factor(const std::vector<double>& history);
 
   /// The larger of the last two per-cycle factors of the scaled residual (the first cycle's
   /// against the residual after full multigrid).

@@ -225,6 +225,9 @@ void FasMultigrid::Impl::iterate_warm_start_to_error(EhlResult& r, const WarmSta
   r.cycles += 1;
   r.residual_history.insert(r.residual_history.begin(), first_residual);
   r.force_history.insert(r.force_history.begin(), first_force);
+  // The first cycle's residual is a cycle's result (the start's is in no history), so the mean
+  // factor is over the whole history, as a reader recomputing it from residual_history gets it.
+  r.convergence_factor = mean_factor(r.residual_history);
   if (r.converged) r.stop_rule += "; the estimate carried with the warm start, from a nearby solution's full multigrid";
 }
 
@@ -259,9 +262,13 @@ void FasMultigrid::Impl::iterate_to_residual(EhlResult& r) {
 void FasMultigrid::Impl::record_residual(EhlResult& r, Level& fine) {
   r.residual_history.push_back(scaled_residual(fine));
   r.force_history.push_back(force_balance(fine));
-  const std::size_t n = r.residual_history.size();
-  if (n >= 2 && r.residual_history.front() > 0.0)
-    r.convergence_factor = std::pow(r.residual_history.back() / r.residual_history.front(), 1.0 / double(n - 1));
+  if (r.residual_history.size() >= 2) r.convergence_factor = mean_factor(r.residual_history);
+}
+
+double FasMultigrid::Impl::mean_factor(const std::vector<double>& history) {
+  const std::size_t n = history.size();
+  if (n < 2 || !(history.front() > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  return std::pow(history.back() / history.front(), 1.0 / static_cast<double>(n - 1));
 }
 
 double FasMultigrid::Impl::residual_factor(const EhlResult& r, double after_fmg) {

@@ -179,7 +179,10 @@ struct EhlResult : model::SolveStatus {
   /// The WU of the cycles after each level's full-multigrid cycle: what the stop rule's
   /// iterations cost on top of full multigrid with one cycle a level (all of a warm start's work).
   double work_units_iterating = 0.0;
-  double convergence_factor = std::numeric_limits<double>::quiet_NaN();   ///< mean per-cycle factor of the residual
+  /// The geometric mean of the per-cycle factors over residual_history ((last/first)^(1/(n − 1)));
+  /// NaN with one cycle, except where full multigrid's cycle was accepted: then the factor
+  /// measured on the coarser level that stood for it.
+  double convergence_factor = std::numeric_limits<double>::quiet_NaN();
   /// The per-cycle factor ρ the error rule took at the stop (the algebraic error left is the last
   /// change times ρ/(1 − ρ)); NaN under the residual rule.
   double rule_factor = std::numeric_limits<double>::quiet_NaN();
