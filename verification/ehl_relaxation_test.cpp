@@ -640,7 +640,7 @@ TEST(FasMultigrid, MixedCoarseVisitsStopTheAlternatingH0Correction) {
 // H_min 19 % too large (4.42e-7 m against 3.72e-7 m); the start's guess now carries the inlet's
 // flux (eighteenth session; it replaced a rule that the start's steps keep the film positive).
 // Its H_min must agree with the solve on twice that inlet distance within 0.5 % (the two inlets'
-// films differ by ~3e-4: docs/ehl-model.md, "The inlet"). (b) A double-involute oil-film contact
+// films differ by ~3e-4: docs/research/ehl-multigrid-sessions.md, "The inlet"). (b) A double-involute oil-film contact
 // on 1281 nodes with its inlet at X = −9.599 stalled at a residual of 1.3e-3 while chord steps
 // counted a whole Newton step in a coarsest visit; main converged it in 5 cycles.
 TEST(FasMultigrid, ChordStepsKeepLongInletsConverging) {

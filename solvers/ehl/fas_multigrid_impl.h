@@ -104,7 +104,7 @@ class FasMultigrid::Impl {
   /// whole, a visit's three steps reduced its merit less than three Newton steps, and a contact
   /// that main converged in 5 cycles stalled (M 7.3, L 12.1, 1281 nodes, inlet at X = −9.599);
   /// counted a third, the thermal Eyring roller's coupling stopped at 60 iterations with its
-  /// pressure solve unconverged; a half converges both (docs/ehl-model.md, seventeenth session).
+  /// pressure solve unconverged; a half converges both (docs/research/ehl-multigrid-sessions.md, seventeenth session).
   /// That the coupling is this sensitive to the coarsest visits is itself a finding.
   static constexpr double chord_step_share = 1.0 / 2.0;
 
@@ -317,7 +317,7 @@ class FasMultigrid::Impl {
   /// nearly a fourth difference, whose solution has large smooth amplitudes that the pattern
   /// cancels to a small change of P. Clipping the amplitudes node by node broke that
   /// cancellation into a sawtooth: (100, 10) on 4097 nodes stalled under the residual rule,
-  /// and converges in 9 cycles with the limit on P (twenty-seventh session, docs/ehl-model.md).
+  /// and converges in 9 cycles with the limit on P (twenty-seventh session, docs/research/ehl-multigrid-sessions.md).
   void add_distributed_changes(Level& l, std::size_t first, const std::vector<double>& amplitude) const;
 
   /// Node i stays at zero in a sweep: held by the coarse grid's truncation, or cavitated
@@ -512,7 +512,7 @@ class FasMultigrid::Impl {
   /// mixture of the last states and their images (AndersonMixing; Walker & Ni 2011). This is
   /// Krylov acceleration of nonlinear multigrid (Washio & Oosterlee, ETNA 6 (1997) 271–290):
   /// it removes the few slow modes a cycle leaves, here the one no coarse grid holds, the
-  /// Barus spike's load answering the coarse grid's H0 correction (docs/ehl-model.md,
+  /// Barus spike's load answering the coarse grid's H0 correction (docs/research/ehl-multigrid-sessions.md,
   /// twenty-first and twenty-seventh sessions). A mixed start whose scaled residual or force
   /// balance is above the cycle's own image's is not taken: the image is, and the history
   /// starts again (a mixture of two spikes is not a spike, and P ≥ 0 clips it).
@@ -536,7 +536,7 @@ class FasMultigrid::Impl {
   /// holds the Barus spike's load but not its response to H0 (a grid too coarse for the
   /// spike), the two visits' H0 corrections alternate: at (1, 25) with a 129-node coarsest
   /// grid the 257-node level's spike solve moved the force balance by ±3.9e-2 after each, and
-  /// the 513-node level's cycles stalled at 3.7e-2 (docs/ehl-model.md, twenty-eighth session).
+  /// the 513-node level's cycles stalled at 3.7e-2 (docs/research/ehl-multigrid-sessions.md, twenty-eighth session).
   /// The mixture is taken unguarded: the level's correction and relaxation follow it, and a
   /// guard like accelerate()'s changed no map's convergence (all 0 failures, medians within 2 %).
   /// Not for the coarsest grid (k = 0), which a W-cycle visits once (cycle()). The mixing's few

@@ -314,15 +314,16 @@ const RegisterSection ehl_section(SectionSpec{
       add_convergence_table(report);
       report.notes.push_back({section, fmt::format(
           "**The (M, L) map at the default settings (issue 19).** One scheme: full multigrid from a "
-          "coarsest grid sized by the film (solved directly in (P, H0)), W(2,1) cycles near the coarsest "
-          "grid and V above, Anderson-accelerated, on each level until "
+          "coarsest grid sized by the pressure zone and the film (solved directly in (P, H0)), W(1,1) cycles "
+          "on the three levels above it and V(1,1) above, Anderson-accelerated, on each level until "
           "the algebraic error left is below a tenth of the discretisation-error estimate from the "
           "converged levels, levels added until that estimate of H_c and H_min is below 0.5 %. Each "
           "cell: work units (finest-grid sweeps; the Newton steps of the coarsest grid and of the spike's "
           "window by their multiply–adds, a restriction as a sweep of the coarse grid), the finest grid reached and Moes' H (film at dp/dx = 0). The "
-          "heavy loads (M = 200–1000) need 4097–16385 nodes for a positive film. The most work goes to "
-          "M = 1 at L ≥ 10 (a 257-node coarsest grid, visited up to 2⁵ times a W-cycle, whose force balance "
-          "the coarse levels' spike solves undo in part: docs/ehl-model.md, twentieth session). Out of "
+          "heavy loads (M = 200–1000) stop on 4097–32769 nodes, where their estimate falls below 0.5 %. The "
+          "most work goes to M ≤ 2 at high L: at M = 1 the coarsest grid is 129 nodes (h ≤ ℓ/2, the pressure "
+          "zone's scale, over a domain of 43ℓ), and its dense Newton steps, in the start and the cycles' "
+          "visits, are most of it (docs/ehl-model.md, \"Convergence, accuracy and work today\"). Out of "
           "range means ᾱ = α·p_h > 40 with Barus, which the input validation refuses.\n\n{}\n",
           map_table(moes_map()))});
     }});

@@ -72,7 +72,7 @@ const bool fixed_map_checks = [] {
 // Seven contacts × inlets at 1, 1.3, 1.77 and 2.5 times the default distance × 641, 1281 and
 // 2561 nodes × both stops (168 solves, ~6 s). It caught what one default solve does not: chord
 // steps counted whole let (7.3, 12.1) stall at 2.5 times its inlet, and a start without the
-// inlet's flux failed on long inlets (seventeenth and eighteenth sessions, docs/ehl-model.md).
+// inlet's flux failed on long inlets (seventeenth and eighteenth sessions, docs/research/ehl-multigrid-sessions.md).
 const RegisterCheck robustness_sweep(CheckSpec{
     .id = "ehl.multigrid.robustness_sweep", .section = section, .solver = solver,
     .reference = "issue 19: one scheme converges from scratch, whatever the domain and grid",
@@ -309,7 +309,7 @@ constexpr Point factor_points[] = {{10, 0}, {20, 10}, {2, 10}, {1, 0}};
 // Venner & Lubrecht's line-contact multigrid reaches 0.1–0.2 a cycle. This W(2,1) design read
 // 0.23–0.38 while the coarse grids could flip the free boundary (eleventh session); with the
 // coarse nodes held at zero where the fine grid cavitates, 0.04–0.14 at these points on 2049
-// nodes (twelfth session, docs/ehl-model.md). With W only on the two levels above the coarsest
+// nodes (twelfth session, docs/research/ehl-multigrid-rebuild.md). With W only on the two levels above the coarsest
 // grid and V above (twenty-seventh session), 0.06, 0.19, 0.19, 0.08: cheaper cycles (less work
 // to 1e-9 at all four points) at a factor near the band's top.
 const RegisterCheck smoothing(CheckSpec{
@@ -368,7 +368,7 @@ CheckValue work_to_error() {
 // Issue 19's target, not met: recorded as missed at the figure reached (thirtieth session), so
 // that the report says so and a change of that figure by more than 5 % either way fails until
 // it is recorded anew. Full multigrid with one cycle a level takes 16–19 WU on 4097–16385 nodes;
-// the stop rule's further cycles 13–34 (docs/ehl-model.md, "Thirtieth session").
+// the stop rule's further cycles 13–34 (docs/research/ehl-multigrid-sessions.md, "Thirtieth session").
 const RegisterCheck work_target(CheckSpec{
     .id = "ehl.multigrid.work_to_error", .section = section, .solver = solver,
     .reference = "issue 19: at most 20 work units to the discretisation error at every N",
