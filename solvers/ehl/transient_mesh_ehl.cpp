@@ -67,11 +67,20 @@ struct Instant {
   ContactState state;
 };
 
+/// What decides whether a step's discretisation-error estimate carries to another step: its
+/// time step and the contact's load, curvature and speed.
+struct ContactScales {
+  double time_step = 0.0, load = 0.0, curvature = 0.0, speed = 0.0;
+  explicit ContactScales(const ContactState& s)
+      : time_step(s.time_step), load(s.load), curvature(s.curvature), speed(s.speed) {}
+  ContactScales() = default;
+};
+
 /// Whether a warm-started step may carry the discretisation-error estimate of the step solved by
 /// full multigrid at `estimated`: the same problem (the steady first step's is not a transient
 /// step's), its load, curvature and speed all within a tenth of that step's. The load jumps
 /// where the pair count changes (× 2 at B) are not.
-bool within_carry(const ContactState& now, const ContactState& estimated) {
+bool within_carry(const ContactScales& now, const ContactScales& estimated) {
   constexpr double carry = 0.1;
   const auto near = [](double a, double b) { return std::abs(a - b) <= carry * std::abs(b); };
   return now.time_step == estimated.time_step && near(now.load, estimated.load) &&
@@ -163,14 +172,14 @@ TransientMeshResult TransientMeshEhl::run() const {
   const bool error_rule = options_.grid.stop == StopRule::discretisation_error;
   std::vector<double> rho_h_old;
   WarmStart previous, before;  // the last two steps' solutions; `before` empty across a jump
-  ContactState estimated_at;   // the contact of the last step solved by full multigrid
+  ContactScales estimated_at;  // the contact of the last step solved by full multigrid
   for (int n = 0; n <= options_.steps; ++n) {
     Instant in = instant(n);
     in.state.rho_h_old = rho_h_old;
-    const bool warm = error_rule && n > 0 && within_carry(in.state, estimated_at);
+    const bool warm = error_rule && n > 0 && within_carry(ContactScales(in.state), estimated_at);
     if (!warm) {
       in.state.nearby = previous;
-      estimated_at = in.state;
+      estimated_at = ContactScales(in.state);
     }
     FasMultigrid mg(problem, options_.grid, in.state);
     auto r = warm ? mg.solve(extrapolated(previous, before)) : mg.solve();
