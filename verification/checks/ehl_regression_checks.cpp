@@ -65,10 +65,10 @@ struct Regression {
 const Regression regressions[] = {
     {"dowson_higginson_h_min", "h_min", reference::dowson_higginson_h_min, false, ViscosityModel::barus, 0.20,
      "no stated accuracy; ±20 %: the regressions of the 1960s–70s differ from one another by up to 10 % "
-     "here and the 641-node first-order film is ~5 % high"},
+     "here; the 641-node film's own discretisation error is 0.7–2.8 % (its estimate)"},
     {"dowson_toyoda_h_c", "h_c", reference::dowson_toyoda_h_c, true, ViscosityModel::barus, 0.20,
-     "no stated accuracy; ±20 %: Dowson–Toyoda agrees with Moes to 0–9 % (docs/research/ehl.md) "
-     "and the 641-node first-order film is ~5 % high"},
+     "no stated accuracy; ±20 %: Dowson–Toyoda agrees with Moes to 0–9 % (docs/research/ehl.md); "
+     "the 641-node film's own discretisation error is 0.7–2.8 % (its estimate)"},
     {"pan_hamrock_h_c", "h_c", reference::pan_hamrock_h_c, true, ViscosityModel::roelands, 0.35,
      "coefficients not verified at the source (docs/research/ehl.md): ±35 % sanity band"},
     {"pan_hamrock_h_min", "h_min", reference::pan_hamrock_h_min, false, ViscosityModel::roelands, 0.35,
