@@ -144,7 +144,7 @@ ThermalLineContact::CouplingTolerances ThermalLineContact::tolerances(const EhlO
   if (options_.stop != CouplingStop::discretisation_error || !(h_min > 0.0)) return t;
   if (nested) {
     // Richardson: with e ≈ C·Δx², f_h − f_2h ≈ −3e_h. The observed orders along x are 1.85–2.04
-    // for h_min, h_c, ΔT_max and μ (docs/thermal-ehl-model.md, "Convergence").
+    // for h_min, h_c, ΔT_max and μ (docs/thermal-ehl-model.md, "Fine grids and observed orders").
     constexpr double richardson = 3.0;
     t.h_min_error = std::abs(h_min - nested->h_min) / (richardson * h_min);
     t.temperature = std::max(t.temperature, grid.error_fraction * std::abs(rise - nested->temperature_rise_max) / richardson);
