@@ -235,25 +235,25 @@ MeshPeriodOilFilmResult MeshPeriodOilFilm::try_solve() const {
     for (const auto& p : pieces) m.contact_length += p.length;
     m.load_per_length = normal_force / m.contact_length;
     m.h_central_min = std::numeric_limits<double>::infinity();
+    // The film at s, its central film, work and two solves counted into the instant.
+    const auto film = [&](double s) {
+      const auto f = film_at(s, m.load_per_length);
+      m.h_central_min = std::min(m.h_central_min, f.h_central);
+      m.work_units += f.work_units;
+      out.solves += 2;
+      return f;
+    };
     int last_pair = 0;
     for (const auto& p : pieces) {
       double stiffness = 0.0;
       if (beta_b == 0.0) {
-        const auto f = film_at(p.s_begin, m.load_per_length);
-        stiffness = p.length * f.stiffness_per_length;
-        m.h_central_min = std::min(m.h_central_min, f.h_central);
-        m.work_units += f.work_units;
-        out.solves += 2;
+        stiffness = p.length * film(p.s_begin).stiffness_per_length;
       } else {
         for (std::size_t j = 0; j < table->n; ++j) {
           double s = 0.0, weight = 0.0;
           model::gsl_check(gsl_integration_glfixed_point(p.s_begin, p.s_end, j, &s, &weight, table.get()),
                            "Gauss–Legendre point");
-          const auto f = film_at(s, m.load_per_length);
-          stiffness += weight * f.stiffness_per_length / std::sin(beta_b);
-          m.h_central_min = std::min(m.h_central_min, f.h_central);
-          m.work_units += f.work_units;
-          out.solves += 2;
+          stiffness += weight * film(s).stiffness_per_length / std::sin(beta_b);
         }
       }
       m.film_stiffness += stiffness;
