@@ -240,7 +240,7 @@ const RegisterCheck isothermal_limit(CheckSpec{
                      "solve the same isothermal Newtonian film on the same grid and integrate the same wall "
                      "stress η·Δu/h − (h/2)·dp/dx; what is left is the multigrid's residual tolerance (1e-8) "
                      "reached along two paths and the thermal iteration's h_min settled to 1e-3 between "
-                     "iterations, whose factors are 1 here (measured 7e-8). The gap at τ0 = 5 MPa (an Eyring film against "
+                     "iterations, whose factors are 1 here. The gap at τ0 = 5 MPa (an Eyring film against "
                      "Eyring traction post-processed on a Newtonian film) and with heat is recorded, not held",
     .tier = Tier::fast,
     .run = [](const CheckContext& ctx) {
