@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "ehl/fas_multigrid.h"
@@ -446,6 +447,24 @@ TEST(FasMultigrid, TheStartCarriesTheInletFlux) {
       EXPECT_NEAR(r.h_min / near.h_min, 1.0, 1e-3) << nodes << " nodes, X_in " << x_in;
     }
   }
+}
+
+// A fixed grid too coarse for a thin film converges to a discrete solution whose film is
+// negative at M = 1000 on 641 nodes (thirty-third session): not an answer, so the solve returns
+// unconverged and says why; the default grid at the same contact resolves the film. Fails if a
+// film ≤ 0 were reported as converged again, or if the rejection caught a resolved film.
+TEST(FasMultigrid, AConvergedFilmBelowZeroIsNotAnAnswer) {
+  const LineContactProblem p(LineContactData::from_moes(1000.0, 0.0));
+  EhlOptions o;
+  o.nodes = 641;
+  const auto coarse = LineContactSolver(p, o).try_solve();
+  EXPECT_FALSE(coarse.converged);
+  EXPECT_LE(coarse.h_min, 0.0);
+  EXPECT_NE(coarse.message.find("no film on this grid"), std::string::npos) << coarse.message;
+  EXPECT_NE(coarse.message.find("641 nodes"), std::string::npos) << coarse.message;
+  const auto resolved = LineContactSolver(p, EhlOptions{}).try_solve();
+  EXPECT_TRUE(resolved.converged) << resolved.message;
+  EXPECT_GT(resolved.h_min, 0.0);
 }
 
 // A contact whose dimensionless scales a double does not hold (a load of 1e-300 N/m: the

@@ -63,7 +63,21 @@ EhlResult FasMultigrid::Impl::solve(const std::optional<WarmStart>& warm) {
   r.work_by_part = node_sweeps_.scaled(per_sweep);
   r.work_units_iterating = iterating_sweeps_ * per_sweep;
   fill_figures(*levels_.back(), r);
+  if (r.converged && !(r.h_min > 0.0)) reject(r, no_film_message(r));
   return r;
+}
+
+// A converged discrete solution whose film touches or crosses zero is not an answer: the
+// surfaces would interpenetrate. It happens on fixed grids too coarse for a thin film, where
+// the film's O(h²) discretisation error, a difference of O(1) terms, exceeds the film itself
+// (thirty-third session, the map's points at L ≤ 2.5: M = 1000 on 641 nodes, M ≥ 500 on 513,
+// M ≥ 200 on 257). The default grid, whose levels are added until the error estimate is below
+// grid.target_error, resolves it.
+std::string FasMultigrid::Impl::no_film_message(const EhlResult& r) const {
+  return fmt::format("no film on this grid: the converged solution's minimum film is {:.3g} m (Moes' estimate "
+                     "of the central film {:.3g} m); {} nodes do not resolve a film this thin: give more nodes, or "
+                     "leave grid.nodes out for the grid chosen by grid.target_error",
+                     r.h_min, film_estimate() * problem_.film_scale(), levels_.back()->n);
 }
 
 std::vector<double> FasMultigrid::Impl::rho_h() {

@@ -56,24 +56,37 @@ const RegisterCheck map_default(CheckSpec{
     .justification = "the default solver has no fallback: a point that does not converge is a failure",
     .tier = Tier::fast, .run = [](const CheckContext&) { return unconverged_points(0); }});
 
-/// The map on a fixed grid: 0 points that do not converge.
-void add_fixed_map_check(int nodes, Tier tier) {
+/// The map on a fixed grid: 0 points that do not converge. `recorded`: the count a grid is
+/// known to reach instead, so that the report says the grid misses the issue's 0 and a change
+/// of that count fails until it is recorded anew.
+void add_fixed_map_check(int nodes, Tier tier, std::optional<double> recorded) {
   Registry::instance().add(CheckSpec{
       .id = fmt::format("ehl.multigrid.map_{}_nodes", nodes), .section = section, .solver = solver,
       .reference = "issue 19: every in-range (M, L) converges from scratch on every N from 257 to 16385",
-      .quantity = fmt::format("points of M 1–1000 × L 0–25 (step 2.5, ᾱ ≤ 40) on {} nodes that do not converge",
-                              nodes),
+      .quantity = fmt::format("points of M 1–1000 × L 0–25 (step 2.5, ᾱ ≤ 40) on {} nodes that do not converge "
+                              "or end without a film (h_min ≤ 0)", nodes),
       .unit = "points", .tolerance = {0, 0},
-      .justification = "one scheme on a fixed grid: a point that does not converge is a failure",
-      .tier = tier, .run = [nodes](const CheckContext&) { return unconverged_points(nodes); }});
+      .justification = "one scheme on a fixed grid: a point that does not converge, or whose converged film is not "
+                       "positive (the grid does not resolve it), is a failure",
+      .tier = tier, .run = [nodes](const CheckContext&) { return unconverged_points(nodes); },
+      .recorded = recorded, .recorded_tolerance = 0.0});
 }
 
 // Issue 19's verification: the full map on 641, 2561 and 16385 nodes, 0 failures (the WU of
 // every point in the diagnostics and in the report's tables, ehl_checks.cpp), and on the range's
-// coarser grids, cheap enough for the fast tier (thirty-third session: 0 failures on each).
+// coarser grids, cheap enough for the fast tier. Every point converges on every grid, but until
+// the thirty-third session a converged film ≤ 0 counted as converged: on 257, 513 and 641 nodes
+// the heaviest loads at L ≤ 2.5 end with a negative film (M ≥ 200, M ≥ 500 and M = 1000), now an
+// unconverged result that says why (FasMultigrid::Impl::no_film_message). Those grids miss the
+// issue's "every N from 257", and are recorded so.
 const bool fixed_map_checks = [] {
-  for (int nodes : fixed_map_grids) add_fixed_map_check(nodes, Tier::full);
-  for (int nodes : coarse_map_grids) add_fixed_map_check(nodes, Tier::fast);
+  const std::map<int, double> known_filmless{{257, 5}, {513, 3}, {641, 2}};
+  const auto recorded = [&](int nodes) -> std::optional<double> {
+    const auto found = known_filmless.find(nodes);
+    return found == known_filmless.end() ? std::nullopt : std::optional<double>(found->second);
+  };
+  for (int nodes : fixed_map_grids) add_fixed_map_check(nodes, Tier::full, recorded(nodes));
+  for (int nodes : coarse_map_grids) add_fixed_map_check(nodes, Tier::fast, recorded(nodes));
   return true;
 }();
 
