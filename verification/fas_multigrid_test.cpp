@@ -465,6 +465,14 @@ TEST(FasMultigrid, AConvergedFilmBelowZeroIsNotAnAnswer) {
   const auto resolved = LineContactSolver(p, EhlOptions{}).try_solve();
   EXPECT_TRUE(resolved.converged) << resolved.message;
   EXPECT_GT(resolved.h_min, 0.0);
+  EXPECT_EQ(resolved.message.find("accuracy is unknown"), std::string::npos) << resolved.message;
+  // On 1025 nodes the film is positive but 76 % thin, and no level gives an estimate: the
+  // answer converges under the residual rule and says that its accuracy is unknown.
+  o.nodes = 1025;
+  const auto unestimated = LineContactSolver(p, o).try_solve();
+  EXPECT_TRUE(unestimated.converged) << unestimated.message;
+  EXPECT_FALSE(std::isfinite(unestimated.error_estimate));
+  EXPECT_NE(unestimated.message.find("film's accuracy is unknown"), std::string::npos) << unestimated.message;
 }
 
 // A contact whose dimensionless scales a double does not hold (a load of 1e-300 N/m: the

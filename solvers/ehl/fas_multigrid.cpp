@@ -64,6 +64,16 @@ EhlResult FasMultigrid::Impl::solve(const std::optional<WarmStart>& warm) {
   r.work_units_iterating = iterating_sweeps_ * per_sweep;
   fill_figures(*levels_.back(), r);
   if (r.converged && !(r.h_min > 0.0)) reject(r, no_film_message(r));
+  // Under the error rule a grid whose levels give no finite estimate (a coarser level's film
+  // not positive) was stopped by the residual rule above: its answer's accuracy is unknown, and
+  // the message says so (thirty-third session: (1000, 0) on 1025 nodes ended 76 % below the
+  // converged film with nothing but an infinite estimate in the summary).
+  if (r.converged && !warm && !o_.single_grid && o_.stop == StopRule::discretisation_error &&
+      !std::isfinite(r.error_estimate))
+    r.message += fmt::format("; no discretisation-error estimate on {} nodes (a coarser level's film is not "
+                             "positive), so the residual rule stopped it and the film's accuracy is unknown: "
+                             "leave grid.nodes out for the grid chosen by grid.target_error",
+                             levels_.back()->n);
   return r;
 }
 

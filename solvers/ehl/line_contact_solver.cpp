@@ -33,7 +33,9 @@ std::string EhlResult::summary() const {
                      "{:.3f} s; h_min {:.4e} m, h_c {:.4e} m, p_max {:.4e} Pa; error estimate {}",
                      converged ? "converged" : "NOT converged", levels, X.size(), cycles, work_units,
                      work_units_iterating, seconds, h_min, h_central, p_max,
-                     std::isnan(error_estimate) ? std::string("none") : fmt::format("{:.2g}", error_estimate));
+                     std::isnan(error_estimate)    ? std::string("none")
+                     : std::isinf(error_estimate) ? std::string("none on this grid (its accuracy is unknown)")
+                                                  : fmt::format("{:.2g}", error_estimate));
 }
 
 LineContactSolver::LineContactSolver(const LineContactProblem& problem, EhlOptions options)
