@@ -63,17 +63,7 @@ EhlResult FasMultigrid::Impl::solve(const std::optional<WarmStart>& warm) {
   r.work_by_part = node_sweeps_.scaled(per_sweep);
   r.work_units_iterating = iterating_sweeps_ * per_sweep;
   fill_figures(*levels_.back(), r);
-  if (r.converged && !(r.h_min > 0.0)) reject(r, no_film_message(r));
-  // Under the error rule a grid whose levels give no finite estimate (a coarser level's film
-  // not positive) was stopped by the residual rule above: its answer's accuracy is unknown, and
-  // the message says so (thirty-third session: (1000, 0) on 1025 nodes ended 76 % below the
-  // converged film with nothing but an infinite estimate in the summary).
-  if (r.converged && !warm && !o_.single_grid && o_.stop == StopRule::discretisation_error &&
-      !std::isfinite(r.error_estimate))
-    r.message += fmt::format("; no discretisation-error estimate on {} nodes (a coarser level's film is not "
-                             "positive), so the residual rule stopped it and the film's accuracy is unknown: "
-                             "leave grid.nodes out for the grid chosen by grid.target_error",
-                             levels_.back()->n);
+  qualify_answer(r, warm.has_value());
   return r;
 }
 
@@ -82,12 +72,25 @@ EhlResult FasMultigrid::Impl::solve(const std::optional<WarmStart>& warm) {
 // the film's O(h²) discretisation error, a difference of O(1) terms, exceeds the film itself
 // (thirty-third session, the map's points at L ≤ 2.5: M = 1000 on 641 nodes, M ≥ 500 on 513,
 // M ≥ 200 on 257). The default grid, whose levels are added until the error estimate is below
-// grid.target_error, resolves it.
-std::string FasMultigrid::Impl::no_film_message(const EhlResult& r) const {
-  return fmt::format("no film on this grid: the converged solution's minimum film is {:.3g} m (Moes' estimate "
-                     "of the central film {:.3g} m); {} nodes do not resolve a film this thin: give more nodes, or "
-                     "leave grid.nodes out for the grid chosen by grid.target_error",
-                     r.h_min, film_estimate() * problem_.film_scale(), levels_.back()->n);
+// grid.target_error, resolves it. And under the error rule a grid whose levels give no finite
+// estimate (a coarser level's film not positive) was stopped by the residual rule: its answer's
+// accuracy is unknown, and the message says so ((1000, 0) on 1025 nodes ended 76 % below the
+// converged film with nothing but an infinite estimate in the summary).
+void FasMultigrid::Impl::qualify_answer(EhlResult& r, bool warm) const {
+  if (!r.converged) return;
+  const std::size_t nodes = levels_.back()->n;
+  if (!(r.h_min > 0.0)) {
+    reject(r, fmt::format("no film on this grid: the converged solution's minimum film is {:.3g} m (Moes' "
+                          "estimate of the central film {:.3g} m); {} nodes do not resolve a film this thin: give "
+                          "more nodes, or leave grid.nodes out for the grid chosen by grid.target_error",
+                          r.h_min, film_estimate() * problem_.film_scale(), nodes));
+    return;
+  }
+  if (!warm && !o_.single_grid && o_.stop == StopRule::discretisation_error && !std::isfinite(r.error_estimate))
+    r.message += fmt::format("; no discretisation-error estimate on {} nodes (a coarser level's film is not "
+                             "positive), so the residual rule stopped it and the film's accuracy is unknown: "
+                             "leave grid.nodes out for the grid chosen by grid.target_error",
+                             nodes);
 }
 
 std::vector<double> FasMultigrid::Impl::rho_h() {

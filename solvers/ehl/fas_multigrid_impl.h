@@ -563,8 +563,9 @@ class FasMultigrid::Impl {
   static void reject(EhlResult& r, std::string message);
 
   void fill_figures(const Level& l, EhlResult& r) const;
-  /// Why a converged solution with a film ≤ 0 is not an answer (solve() rejects it).
-  [[nodiscard]] std::string no_film_message(const EhlResult& r) const;
+  /// A converged answer with a film ≤ 0 rejected (the grid does not resolve the film), and one
+  /// the error rule could not estimate marked as of unknown accuracy.
+  void qualify_answer(EhlResult& r, bool warm) const;
 
   // --- helpers ---------------------------------------------------------------------------
   [[nodiscard]] double force_balance(const Level& l) const { return std::abs(integral(l) - l.g) / state_.load; }
