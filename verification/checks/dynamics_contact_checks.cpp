@@ -71,7 +71,7 @@ const RegisterCheck contact_loss_rk4(CheckSpec{
     .quantity = "max |δ_CVODE − δ_RK4| / p2p(δ), light load at resonance with contact loss, 40 mesh cycles",
     .unit = "-", .tolerance = {1e-5, 0},
     .justification = "RK4 at 4096 steps a cycle with events bisected to 1e-9 of a step is converged (1024 to "
-                     "8192 steps give the same deviation, 7e-7); what is left is CVODE's rtol 1e-8 error grown "
+                     "8192 steps give the same deviation); what is left is CVODE's rtol 1e-8 error grown "
                      "over the impacts: 1e-5 as for the linear model",
     .tier = Tier::fast, .run = [](const CheckContext& ctx) {
       auto c = seed003(ctx);
