@@ -39,6 +39,7 @@ EhlResult FasMultigrid::Impl::solve(const std::optional<WarmStart>& warm) {
   const auto start = std::chrono::steady_clock::now();
   EhlResult r;
   r.scheme = o_.describe();
+  bool unestimated = false;  // the error rule asked, but no level gave an estimate to stop at
   if (warm) {
     start_from(*warm);
     if (o_.stop == StopRule::discretisation_error && std::isfinite(warm->error_estimate))
@@ -51,8 +52,8 @@ EhlResult FasMultigrid::Impl::solve(const std::optional<WarmStart>& warm) {
     iterate_to_residual(r);
   } else {
     full_multigrid(r);  // under the error rule, converges every level to it
-    if (failure_.empty() && !(o_.stop == StopRule::discretisation_error && std::isfinite(r.error_estimate)))
-      iterate_to_residual(r);
+    unestimated = o_.stop == StopRule::discretisation_error && !std::isfinite(r.error_estimate);
+    if (failure_.empty() && (o_.stop == StopRule::residual || unestimated)) iterate_to_residual(r);
   }
   if (!failure_.empty()) reject(r, failure_);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -63,7 +64,7 @@ EhlResult FasMultigrid::Impl::solve(const std::optional<WarmStart>& warm) {
   r.work_by_part = node_sweeps_.scaled(per_sweep);
   r.work_units_iterating = iterating_sweeps_ * per_sweep;
   fill_figures(*levels_.back(), r);
-  qualify_answer(r, warm.has_value());
+  qualify_answer(r, unestimated);
   return r;
 }
 
@@ -72,11 +73,11 @@ EhlResult FasMultigrid::Impl::solve(const std::optional<WarmStart>& warm) {
 // the film's O(h²) discretisation error, a difference of O(1) terms, exceeds the film itself
 // (thirty-third session, the map's points at L ≤ 2.5: M = 1000 on 641 nodes, M ≥ 500 on 513,
 // M ≥ 200 on 257). The default grid, whose levels are added until the error estimate is below
-// grid.target_error, resolves it. And under the error rule a grid whose levels give no finite
-// estimate (a coarser level's film not positive) was stopped by the residual rule: its answer's
-// accuracy is unknown, and the message says so ((1000, 0) on 1025 nodes ended 76 % below the
-// converged film with nothing but an infinite estimate in the summary).
-void FasMultigrid::Impl::qualify_answer(EhlResult& r, bool warm) const {
+// grid.target_error, resolves it. And a full-multigrid solve under the error rule that no level
+// could estimate was stopped by the residual rule: its answer's accuracy is unknown, and the
+// message says so ((1000, 0) on 1025 nodes ended 76 % below the converged film with nothing but
+// an infinite estimate in the summary).
+void FasMultigrid::Impl::qualify_answer(EhlResult& r, bool unestimated) const {
   if (!r.converged) return;
   const std::size_t nodes = levels_.back()->n;
   if (!(r.h_min > 0.0)) {
@@ -84,13 +85,12 @@ void FasMultigrid::Impl::qualify_answer(EhlResult& r, bool warm) const {
                           "estimate of the central film {:.3g} m); {} nodes do not resolve a film this thin: give "
                           "more nodes, or leave grid.nodes out for the grid chosen by grid.target_error",
                           r.h_min, film_estimate() * problem_.film_scale(), nodes));
-    return;
-  }
-  if (!warm && !o_.single_grid && o_.stop == StopRule::discretisation_error && !std::isfinite(r.error_estimate))
-    r.message += fmt::format("; no discretisation-error estimate on {} nodes (a coarser level's film is not "
-                             "positive), so the residual rule stopped it and the film's accuracy is unknown: "
-                             "leave grid.nodes out for the grid chosen by grid.target_error",
+  } else if (unestimated) {
+    r.message += fmt::format("; no discretisation-error estimate on {} nodes (no coarser level with a positive "
+                             "film to estimate it from), so the residual rule stopped it and the film's accuracy "
+                             "is unknown: leave grid.nodes out for the grid chosen by grid.target_error",
                              nodes);
+  }
 }
 
 std::vector<double> FasMultigrid::Impl::rho_h() {

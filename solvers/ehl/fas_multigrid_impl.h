@@ -564,8 +564,8 @@ class FasMultigrid::Impl {
 
   void fill_figures(const Level& l, EhlResult& r) const;
   /// A converged answer with a film ≤ 0 rejected (the grid does not resolve the film), and one
-  /// the error rule could not estimate marked as of unknown accuracy.
-  void qualify_answer(EhlResult& r, bool warm) const;
+  /// the error rule could not estimate (`unestimated`) marked as of unknown accuracy.
+  void qualify_answer(EhlResult& r, bool unestimated) const;
 
   // --- helpers ---------------------------------------------------------------------------
   [[nodiscard]] double force_balance(const Level& l) const { return std::abs(integral(l) - l.g) / state_.load; }
