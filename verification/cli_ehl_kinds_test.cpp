@@ -125,6 +125,8 @@ TEST(Cli, EhlLineBadInput) {
        "the entrainment speed must be positive"},
       {R"({"kind": "ehl_line", "moes": {"M": 20, "L": 10}, "grid": {"nodes": 2004}})",
        "grid.nodes = 2004: allowed are (n0 − 1)·2^k + 1 nodes"},
+      {R"({"kind": "ehl_line", "moes": {"M": 1000, "L": 0}, "grid": {"nodes": 1025}})",
+       "grid.nodes = 1025: too coarse for the film at this load"},
       {R"({"kind": "ehl_line", "moes": {"M": 20, "L": 10}, "grid": {"nodes": 641, "levels": 5}})",
        "grid.nodes: give either nodes or levels (with coarsest_nodes), not both"},
       {R"({"kind": "ehl_line", "moes": {"M": 20, "L": 10}, "grid": {"levels": 5}})",

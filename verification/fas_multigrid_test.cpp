@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fmt/format.h>
 #include <string>
 #include <vector>
 
@@ -473,6 +474,33 @@ TEST(FasMultigrid, AConvergedFilmBelowZeroIsNotAnAnswer) {
   EXPECT_TRUE(unestimated.converged) << unestimated.message;
   EXPECT_FALSE(std::isfinite(unestimated.error_estimate));
   EXPECT_NE(unestimated.message.find("film's accuracy is unknown"), std::string::npos) << unestimated.message;
+}
+
+// The grid's validation refuses those grids up front (thirty-fourth session): at M = 1000 a
+// spacing ≤ 0.35·√H_est needs ≥ 1070 nodes on the default domain, so 641 and 1025 nodes are
+// refused naming the key, the value and the fewest nodes, and 2049 (21 % thin, with an estimate
+// that says so) and the default grid are accepted. At M = 10 even 257 nodes resolve the film.
+// Fails if the bound moved, or if the refusal stopped naming what the user should give.
+TEST(FasMultigrid, AGridTooCoarseForTheFilmIsRefusedUpFront) {
+  const LineContactProblem heavy(LineContactData::from_moes(1000.0, 0.0));
+  EhlOptions o;
+  for (int nodes : {641, 1025}) {
+    o.nodes = nodes;
+    try {
+      refuse_grid_not_resolving_film(heavy, o);
+      ADD_FAILURE() << nodes << " nodes accepted at M = 1000";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(fmt::format("grid.nodes = {}", nodes)), std::string::npos) << what;
+      EXPECT_NE(what.find("allowed are ≥ 1070 nodes"), std::string::npos) << what;
+      EXPECT_NE(what.find("e.g. 2049"), std::string::npos) << what;
+    }
+  }
+  o.nodes = 2049;
+  EXPECT_NO_THROW(refuse_grid_not_resolving_film(heavy, o));
+  EXPECT_NO_THROW(refuse_grid_not_resolving_film(heavy, EhlOptions{}));
+  o.nodes = 257;
+  EXPECT_NO_THROW(refuse_grid_not_resolving_film(LineContactProblem(LineContactData::from_moes(10.0, 0.0)), o));
 }
 
 // A contact whose dimensionless scales a double does not hold (a load of 1e-300 N/m: the

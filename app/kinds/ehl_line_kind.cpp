@@ -111,6 +111,7 @@ json run_ehl_line(const json& case_json) {
   const auto& options = k.grid;
 
   const ehl::LineContactProblem problem(data);
+  ehl::refuse_grid_not_resolving_film(problem, options);
   const auto r = ehl::LineContactSolver(problem, options).try_solve();
   auto out = result_json(problem, r);
   add_solve_status(out, r);
@@ -123,7 +124,7 @@ json run_ehl_line(const json& case_json) {
                   "is not part of the stop rule or the error estimate");
   // The solver's own estimate against the error the user asked for (grid.target_error).
   if (!std::isfinite(r.error_estimate))
-    notes.push_back("no discretisation-error estimate (a single grid)");
+    notes.push_back("no discretisation-error estimate (a single grid, or no coarser level with a positive film)");
   else if (r.error_estimate > options.target_error)
     notes.push_back(fmt::format("the estimated discretisation error of H_c and H_min, {:.2g} %, is above the target "
                                 "{:.2g} %: give more levels (grid.max_levels or grid.nodes)",

@@ -16,8 +16,8 @@ FasMultigrid::Impl::Impl(const LineContactProblem& problem, const EhlOptions& o,
     : problem_(problem), o_(o), state_(std::move(state)) {
   o_.validate();
   if (state_.load <= 0.0) state_.load = problem_.load();
-  x_in_ = o_.x_in != 0.0 || o_.x_out != 0.0 ? o_.x_in : problem_.x_in();
-  x_out_ = o_.x_in != 0.0 || o_.x_out != 0.0 ? o_.x_out : problem_.x_out();
+  x_in_ = o_.domain_in(problem_);
+  x_out_ = o_.domain_out(problem_);
   if (state_.has_fields() && o_.adaptive())
     throw std::invalid_argument("FasMultigrid: a contact state with fields needs a fixed grid (levels > 0)");
   if (o_.single_grid) {
@@ -145,10 +145,7 @@ int FasMultigrid::Impl::levels_for_finest(std::size_t nodes) {
   return levels;
 }
 
-double FasMultigrid::Impl::film_estimate() const {
-  const auto& d = problem_.data();
-  return moes_central_film(d.moes_M(), 0.0) * d.moes_film_scale() / problem_.film_scale();
-}
+double FasMultigrid::Impl::film_estimate() const { return problem_.isoviscous_film(); }
 
 void FasMultigrid::Impl::inject_fields() {
   Level& fine = *levels_.back();

@@ -145,6 +145,10 @@ double LineContactProblem::x_out() const {
   return 1.5 + 1.535 / data_.moes_M();
 }
 
+double LineContactProblem::isoviscous_film() const {
+  return moes_central_film(data_.moes_M(), 0.0) * data_.moes_film_scale() / film_scale();
+}
+
 double LineContactProblem::viscosity(double P) const {
   const double p = std::max(P, 0.0) * p_r_;
   if (data_.viscosity_model == ViscosityModel::barus)

@@ -80,6 +80,9 @@ class LineContactProblem {
   /// pressure decays as |X|⁻³ and the load lost beyond X_in is 4/(4.895·X_in²) ≈ 5e-4 relative.
   [[nodiscard]] double x_in() const;
   [[nodiscard]] double x_out() const;
+  /// Moes' isoviscous central film (L = 0) in the problem's film units: the film scale the
+  /// start, the coarsest grid and the finest grid are sized by (at L > 0 the film is thicker).
+  [[nodiscard]] double isoviscous_film() const;
 
   /// η̄(P) = η/η0 and ρ̄(P) = ρ/ρ0.
   [[nodiscard]] double viscosity(double P) const;

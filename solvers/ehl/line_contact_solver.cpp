@@ -1,5 +1,6 @@
 #include "line_contact_solver.h"
 
+#include <cmath>
 #include <fmt/format.h>
 
 #include "fas_multigrid.h"
@@ -36,6 +37,30 @@ std::string EhlResult::summary() const {
                      std::isnan(error_estimate)    ? std::string("none")
                      : std::isinf(error_estimate) ? std::string("none on this grid (its accuracy is unknown)")
                                                   : fmt::format("{:.2g}", error_estimate));
+}
+
+double EhlOptions::domain_in(const LineContactProblem& problem) const {
+  return x_in != 0.0 || x_out != 0.0 ? x_in : problem.x_in();
+}
+
+double EhlOptions::domain_out(const LineContactProblem& problem) const {
+  return x_in != 0.0 || x_out != 0.0 ? x_out : problem.x_out();
+}
+
+void refuse_grid_not_resolving_film(const LineContactProblem& problem, const EhlOptions& options) {
+  if (options.nodes <= 0) return;
+  const double film = problem.isoviscous_film();
+  const double h_max = finest_film_spacing * std::sqrt(film);
+  const double length = options.domain_out(problem) - options.domain_in(problem);
+  if (length / static_cast<double>(options.nodes - 1) <= h_max) return;
+  const auto fewest = static_cast<int>(std::ceil(length / h_max)) + 1;
+  int grid = 257;  // the grids of issue 19's range, 2^k + 1 nodes
+  while (grid < fewest) grid = 2 * grid - 1;
+  throw InputError(fmt::format(
+      "grid.nodes = {}: too coarse for the film at this load (Moes' isoviscous film {:.3g} m); allowed are "
+      "≥ {} nodes, a spacing ≤ {:g}·√film (four nodes where the rigid gap grows by one film), e.g. {}; or leave "
+      "grid.nodes out for the grid chosen by grid.target_error",
+      options.nodes, film * problem.film_scale(), fewest, finest_film_spacing, grid));
 }
 
 LineContactSolver::LineContactSolver(const LineContactProblem& problem, EhlOptions options)

@@ -108,6 +108,9 @@ struct EhlOptions {
   /// its residual rule 364 → 224), medians equal (twenty-eighth session).           [0, 10]
   int acceleration_depth = 2;
   double x_in = 0.0, x_out = 0.0; ///< domain; both 0 picks the problem's default
+  /// The domain's ends in use: x_in and x_out where given, else the problem's.
+  [[nodiscard]] double domain_in(const LineContactProblem& problem) const;
+  [[nodiscard]] double domain_out(const LineContactProblem& problem) const;
   bool direct_deformation = false; ///< the O(n²) sum instead of the FFT (the benchmarks' baseline)
   /// Relaxation on the finest grid alone, the benchmarks' single-grid baseline (issue 19): no
   /// coarse grid and no local treatment; a cycle is one relaxation sweep followed by the force
@@ -223,5 +226,23 @@ class LineContactSolver {
   LineContactProblem problem_;  ///< a copy: the solver outlives no caller's object
   EhlOptions options_;
 };
+
+/// The finest grid's h ≤ finest_film_spacing·√H_est (H_est: LineContactProblem::isoviscous_film),
+/// four nodes across √(2·H_est), the length over which the rigid gap X²/2 grows by one film.
+/// A coarser grid does not resolve the film, whose discretisation error (a difference of O(1)
+/// terms: H0, X²/2 and the deformation) is then most of it. Measured over the in-range map at
+/// M 20–1000 on 257 … 4097 nodes against the default grid's film (thirty-fourth session,
+/// docs/ehl-model.md): every grid at h/√H_est ≥ 0.36 ended 17–83 % thin with no error estimate,
+/// or without a film at all (from 0.48); every grid under 0.29 within 40 %, with an estimate
+/// that says how far (but two, 3–6 % off), and under 0.16 within 6 %.
+inline constexpr double finest_film_spacing = 0.35;
+
+/// The validator of a fixed finest grid (grid.nodes of the ehl_line case): InputError naming
+/// the fewest nodes that resolve the film where options.nodes is coarser than
+/// finest_film_spacing·√H_est. Issue 19's "every N from 257", restated as every N whose grid
+/// resolves the film. Not applied where coarse grids serve as starts or for friction alone (the
+/// thermal solver's nested grids, the ehl_thermal friction law's 81 nodes); there, and on a
+/// grid given by grid.levels, a converged film ≤ 0 is rejected after the solve (FasMultigrid).
+void refuse_grid_not_resolving_film(const LineContactProblem& problem, const EhlOptions& options);
 
 }  // namespace gearbench::ehl

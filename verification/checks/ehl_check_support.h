@@ -25,6 +25,9 @@ GridSeries grid_series(double M, double L, const std::vector<int>& nodes);
 struct MapPoint {
   double M = 0.0, L = 0.0;
   bool in_range = false;  ///< false: ᾱ = α·p_h > 40 with Barus, refused by the input validation
+  /// The fixed grid does not resolve the film: refused by the grid's validation
+  /// (ehl::refuse_grid_not_resolving_film), as `gearbench run` refuses it.
+  bool refused = false;
   bool converged = false;
   int cycles = 0;
   double nodes = 0.0, work_units = 0.0, error_estimate = 0.0;

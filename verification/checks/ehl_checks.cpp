@@ -287,6 +287,7 @@ void add_profile_figures(reports::Report& report) {
 
 std::string map_cell(const MapPoint& pt) {
   if (!pt.in_range) return " out of range (ᾱ > 40) |";
+  if (pt.refused) return " refused (grid too coarse for the film) |";
   if (!pt.converged) return fmt::format(" **not converged** ({:.0f} WU) |", pt.work_units);
   return fmt::format(" {:.0f} WU, {:.0f} nodes, H {:.3f} |", pt.work_units, pt.nodes, pt.H);
 }
@@ -333,7 +334,10 @@ const RegisterSection ehl_fixed_maps(SectionSpec{
     .id = "ehl_fixed_maps", .tier = Tier::full, .add = [](const CheckContext&, reports::Report& report) {
       for (int nodes : fixed_map_grids)
         report.notes.push_back({section, fmt::format("**The (M, L) map on {} nodes (issue 19).** The same scheme and "
-                                                     "stop as the default, on a fixed finest grid; cells as above.\n\n{}\n",
+                                                     "stop as the default, on a fixed finest grid; cells as above. "
+                                                     "Refused: the grid's spacing exceeds 0.35·√H_est, too coarse "
+                                                     "for the film (ehl::finest_film_spacing), which `gearbench run` "
+                                                     "refuses with exit 2.\n\n{}\n",
                                                      nodes, map_table(moes_map(nodes)))});
     }});
 
