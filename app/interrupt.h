@@ -1,8 +1,11 @@
 #pragma once
 // Ctrl-C (SIGINT) and SIGTERM end gearbench at once: one line on stderr and exit code 130.
-// Results reach disk only inside a DeferInterrupts scope (a temporary file or folder, then a
-// rename), where the signal waits until the scope ends, so an interrupted run never leaves a
-// half-written result or report, and never presents a partial one as complete.
+// Results reach disk only where the signal waits (a temporary file or folder, then a rename):
+// inside a DeferInterrupts scope for a write the run goes on after (a benchmark record of a
+// range), after hold_interrupts_to_the_end for a write that is the run's last step (run's
+// result, verify's report, sweep's table). So an interrupted run never leaves a half-written
+// result or report, never presents a partial one as complete, and exits 130 only with
+// nothing written.
 #include <csignal>
 
 namespace gearbench::app {

@@ -59,7 +59,10 @@ void write_output(const std::string& text, const std::string& output_path) {
     std::cout << text;  // main checks that stdout took it
     return;
   }
-  const DeferInterrupts defer;
+  // The result is the run's last step: a Ctrl-C from here on waits for the end of the run, as
+  // verify holds it for its report. Deferred only to the end of this function, a signal that
+  // came during the write ended the run with 130 after the file had been renamed into place.
+  hold_interrupts_to_the_end();
   std::error_code ec;
   const auto status = fs::status(output_path, ec);
   if (fs::is_directory(status))

@@ -400,7 +400,10 @@ int sweep_command(const std::string& sweep_path, const std::string& out_dir, boo
   std::exception_ptr error;
   if (mpi.rank() == 0) {
     try {
-      const DeferInterrupts defer;  // the table, JSON and figures are written as one
+      // The table, JSON and figures are written as one and are the sweep's last step: a Ctrl-C
+      // from here waits for the end (deferred to the write's end only, it exited 130 with the
+      // output complete, as `run` did).
+      hold_interrupts_to_the_end();
       status = write_sweep_output(spec, rows, out_dir, pdf, mpi.size());
     } catch (...) {
       error = std::current_exception();

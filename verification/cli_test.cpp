@@ -326,19 +326,28 @@ TEST(Cli, StiffnessBadInput) {
 }
 
 // Ctrl-C ends a run with exit code 130 and writes nothing: no result file, no report folder,
-// no temporary left behind. The run is seed 004's transient with ten times its steps (~11 s):
-// the notice the signal waits for comes after a second, and the 200-step case had come down to
-// about that (1.1–1.4 s; twice it ended before its notice under ctest -j2, twenty-ninth session).
+// no temporary left behind. The run is seed 004's transient with a hundred times its steps
+// (~40 s uninterrupted; the signal comes after the notice at 1 s): with ten times, 3.7 s since
+// the transient's warm steps, a test process held up for 2.7 s under load sent its signal after
+// the result was written (reproduced by delaying the kill, thirty-fourth session). Each run
+// writes into its own emptied folder, so a leftover of an earlier process with the same pid, or
+// a temporary, shows.
 TEST(Cli, InterruptWritesNothing) {
   std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed004_transient_ehl.json");
   auto long_run = json::parse(in);
-  long_run["time_steps"] = 2000;
-  const auto out = temp_path("interrupted_run.json");
-  EXPECT_EQ(interrupt_gearbench({"run", write_case("interrupted_transient", long_run.dump()), "-o", out.string()},
-                                "running..."), 130);
-  EXPECT_FALSE(fs::exists(out));
+  long_run["time_steps"] = 20000;
+  const auto out_dir = temp_path("interrupted_run");
+  fs::remove_all(out_dir);
+  fs::create_directories(out_dir);
+  EXPECT_EQ(interrupt_gearbench({"run", write_case("interrupted_transient", long_run.dump()), "-o",
+                                 (out_dir / "result.json").string()},
+                                "running..."),
+            130);
+  EXPECT_TRUE(fs::is_empty(out_dir)) << "an interrupted run left files in " << out_dir;
+  fs::remove_all(out_dir);
 
   const auto dir = temp_path("interrupted_verify");
+  fs::remove_all(dir);
   fs::create_directories(dir);
   EXPECT_EQ(interrupt_gearbench({"verify", "--out", dir.string()}, "[2/"), 130);
   EXPECT_TRUE(fs::is_empty(dir)) << "an interrupted verify left files in " << dir;

@@ -55,7 +55,6 @@ inline std::string write_case(const std::string& name, const std::string& text) 
   return path.string();
 }
 
-/// Starts gearbench with `args`, sends SIGINT after `delay`, and returns its exit status.
 /// Runs gearbench with `args`, sends SIGINT once its stderr shows `marker` (so the signal
 /// lands in the middle of the work whatever the machine's load, not at a fixed delay), and
 /// returns its exit code (−1 if it did not exit normally, −2 if the marker never came).
