@@ -47,12 +47,17 @@ double EhlOptions::domain_out(const LineContactProblem& problem) const {
   return x_in != 0.0 || x_out != 0.0 ? x_out : problem.x_out();
 }
 
+double film_spacing_ratio(const LineContactProblem& problem, const EhlOptions& options) {
+  if (options.nodes <= 0) return 0.0;
+  const double length = options.domain_out(problem) - options.domain_in(problem);
+  return length / static_cast<double>(options.nodes - 1) / std::sqrt(problem.isoviscous_film());
+}
+
 void refuse_grid_not_resolving_film(const LineContactProblem& problem, const EhlOptions& options) {
-  if (options.nodes <= 0) return;
+  if (film_spacing_ratio(problem, options) <= finest_film_spacing) return;
   const double film = problem.isoviscous_film();
   const double h_max = finest_film_spacing * std::sqrt(film);
   const double length = options.domain_out(problem) - options.domain_in(problem);
-  if (length / static_cast<double>(options.nodes - 1) <= h_max) return;
   const auto fewest = static_cast<int>(std::ceil(length / h_max)) + 1;
   int grid = 257;  // the grids of issue 19's range, 2^k + 1 nodes
   while (grid < fewest) grid = 2 * grid - 1;

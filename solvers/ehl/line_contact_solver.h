@@ -230,12 +230,16 @@ class LineContactSolver {
 /// The finest grid's h ≤ finest_film_spacing·√H_est (H_est: LineContactProblem::isoviscous_film),
 /// four nodes across √(2·H_est), the length over which the rigid gap X²/2 grows by one film.
 /// A coarser grid does not resolve the film, whose discretisation error (a difference of O(1)
-/// terms: H0, X²/2 and the deformation) is then most of it. Measured over the in-range map at
-/// M 20–1000 on 257 … 4097 nodes against the default grid's film (thirty-fourth session,
-/// docs/ehl-model.md): every grid at h/√H_est ≥ 0.36 ended 17–83 % thin with no error estimate,
-/// or without a film at all (from 0.48); every grid under 0.29 within 40 %, with an estimate
-/// that says how far (but two, 3–6 % off), and under 0.16 within 6 %.
+/// terms: H0, X²/2 and the deformation) is then most of it. Measured over the in-range map on
+/// 65 … 4097 nodes against the default grid's film (thirty-fourth session, docs/ehl-model.md): at
+/// M ≥ 20 the grids above 0.35 end 10 % to 53 × off, 33 of 66 below zero and 51 without an error
+/// estimate; those at or below it within 40 %, none below zero, all but two with an estimate. At
+/// M < 20 no grid loses the film (4–30 % off above 0.35): the bound is conservative there.
 inline constexpr double finest_film_spacing = 0.35;
+
+/// The finest grid's spacing over √H_est for a fixed grid of options.nodes (0 without one):
+/// what finest_film_spacing bounds.
+[[nodiscard]] double film_spacing_ratio(const LineContactProblem& problem, const EhlOptions& options);
 
 /// The validator of a fixed finest grid (grid.nodes of the ehl_line case): InputError naming
 /// the fewest nodes that resolve the film where options.nodes is coarser than
