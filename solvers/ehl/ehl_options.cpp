@@ -61,7 +61,8 @@ model::OptionTable<EhlOptions> make_grid_table() {
   model::OptionTable<EhlOptions> t;
   t.integer("nodes", &EhlOptions::nodes, 9, max_nodes,
             {.description = "nodes on the finest grid, (n0 - 1) 2^k + 1; not with levels; absent (and no levels): "
-                            "levels are added until the error estimate is below target_error",
+                            "levels are added until the error estimate is below target_error. ehl_line refuses a "
+                            "grid too coarse for the film (spacing > 0.35 sqrt(film), naming the fewest nodes)",
              .unset = 0});
   t.integer("levels", &EhlOptions::levels, 1, 14,
             {.description = "grid levels from coarsest_nodes (which must be given); not with nodes", .unset = 0});
