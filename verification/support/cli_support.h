@@ -1,6 +1,6 @@
 #pragma once
 // Running the gearbench executable from a test: its exit code, stdout and stderr; temporary
-// case files; and a run interrupted at a given point of its progress.
+// case files; the case files of cases/; and a run interrupted at a given point of its progress.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <sys/wait.h>
@@ -76,6 +77,15 @@ inline std::string write_case(const std::string& name, const std::string& text) 
   const auto path = temp_path("case_" + name + ".json");
   std::ofstream(path) << text;
   return path.string();
+}
+
+/// The case file cases/`name`.json, parsed. It throws naming the file when it cannot be opened,
+/// which fails the test clearly (parsing the unopened stream only said "unexpected end of input").
+inline nlohmann::json read_case(const std::string& name) {
+  const auto path = std::string(GEARBENCH_SOURCE_DIR) + "/cases/" + name + ".json";
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open the case file " + path);
+  return nlohmann::json::parse(in);
 }
 
 /// Runs gearbench with `args`, sends SIGINT once its stderr shows `marker` (so the signal
