@@ -46,8 +46,7 @@ TEST(Cli, EhlLineRunsAndReportsNonConvergence) {
   // One cycle a level cannot bring the algebraic error to 1e-6 of the discretisation error (a
   // 0.1 % target, used before, is reached in one cycle since the thirteenth session): exit 3, one
   // error line, the diagnostics still written to -o.
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/ehl_moes_M20_L10.json");
-  auto j = json::parse(in);
+  auto j = read_case("ehl_moes_M20_L10");
   j["grid"]["max_cycles"] = 1;
   j["grid"]["error_fraction"] = 1e-6;
   const auto out = temp_path("ehl_unconverged.json").string();
@@ -102,8 +101,7 @@ TEST(Cli, EhlLineWithholdsANewtonianTractionAboveTheLoad) {
 
 // The same for the isothermal comparison of a thermal point at more sliding than the case's.
 TEST(Cli, ThermalPointWithholdsTheIsothermalNewtonianTractionAboveTheLoad) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/tehl_point_sliding.json");
-  auto j = json::parse(in);
+  auto j = read_case("tehl_point_sliding");
   j["contact"]["surface_speeds_m_per_s"] = {2.5, 1.0687};
   const auto o = run_gearbench("run " + write_case("tehl_sliding", j.dump()));
   ASSERT_EQ(o.exit_code, 0) << o.err;
@@ -148,8 +146,7 @@ TEST(Cli, EhlLineBadInput) {
 // A short march (8 steps, 161 nodes) runs through; bad input exits 2 naming the key; a step
 // that cannot converge exits 3 with the steps so far in -o.
 TEST(Cli, EhlTransientRunsAndValidates) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed004_transient_ehl.json");
-  const auto seed = json::parse(in);
+  const auto seed = read_case("seed004_transient_ehl");
   auto small = seed;
   small["time_steps"] = 24;
   small["grid"] = {{"nodes", 161}};
@@ -216,8 +213,7 @@ TEST(Cli, EhlTransientRunsAndValidates) {
 
 // Two positions on a coarse grid run through; bad input exits 2 naming the key.
 TEST(Cli, OilFilmStiffnessRunsAndValidates) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/oil_film_stiffness_spur.json");
-  auto small = json::parse(in);
+  auto small = read_case("oil_film_stiffness_spur");
   small["positions"] = 2;
   small["grid"] = {{"nodes", 161}};
   const auto o = run_gearbench("run " + write_case("oil_film_small", small.dump()));
@@ -244,8 +240,7 @@ TEST(Cli, OilFilmStiffnessRunsAndValidates) {
 // piece): both tooth forms come back with a positive film stiffness at every instant, the
 // zones leave the gap at the pitch point, and rack mistakes name their key.
 TEST(Cli, OilFilmStiffnessDoubleInvoluteRunsAndValidates) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed002_double_involute_oil_film.json");
-  auto small = json::parse(in);
+  auto small = read_case("seed002_double_involute_oil_film");
   small["mesh_samples"] = 2;
   small["points_per_piece"] = 1;
   small["grid"] = {{"nodes", 161}};
@@ -336,8 +331,7 @@ void one_cycle(json& c) {
 }
 
 TEST(Cli, EhlTransientResultCarriesConvergedMessageAndSummary) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed004_transient_ehl.json");
-  auto small = json::parse(in);
+  auto small = read_case("seed004_transient_ehl");
   small["time_steps"] = 4;
   small["grid"] = {{"nodes", 161}};
   const auto failed = expect_converges_then_fails("status_transient", small, "converged: all 5 time steps",
@@ -346,8 +340,7 @@ TEST(Cli, EhlTransientResultCarriesConvergedMessageAndSummary) {
 }
 
 TEST(Cli, OilFilmStiffnessResultCarriesConvergedMessageAndSummary) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/oil_film_stiffness_spur.json");
-  auto small = json::parse(in);
+  auto small = read_case("oil_film_stiffness_spur");
   small["positions"] = 1;
   small["grid"] = {{"nodes", 161}};
   const auto failed =
@@ -357,8 +350,7 @@ TEST(Cli, OilFilmStiffnessResultCarriesConvergedMessageAndSummary) {
 }
 
 TEST(Cli, OilFilmStiffnessDoubleInvoluteResultCarriesConvergedMessageAndSummary) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed002_double_involute_oil_film.json");
-  auto small = json::parse(in);
+  auto small = read_case("seed002_double_involute_oil_film");
   small["mesh_samples"] = 1;
   small["points_per_piece"] = 1;
   small["grid"] = {{"nodes", 161}};
@@ -369,8 +361,7 @@ TEST(Cli, OilFilmStiffnessDoubleInvoluteResultCarriesConvergedMessageAndSummary)
 }
 
 TEST(Cli, ThermalPointResultCarriesConvergedMessageAndSummary) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/tehl_point_sliding.json");
-  auto point = json::parse(in);
+  auto point = read_case("tehl_point_sliding");
   point["grid"] = {{"nodes", 161}};
   expect_converges_then_fails("status_tehl_point", point, "converged: the temperature and h_min settled",
                               [](json& c) { c["thermal"] = {{"max_iterations", 1}}; },
@@ -378,8 +369,7 @@ TEST(Cli, ThermalPointResultCarriesConvergedMessageAndSummary) {
 }
 
 TEST(Cli, ThermalPathResultCarriesConvergedMessageAndSummary) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed001_tehl_path.json");
-  auto path = json::parse(in);
+  auto path = read_case("seed001_tehl_path");
   path["grid"] = {{"nodes", 161}};
   path.erase("micropitting");
   path["thermal"]["max_iterations"] = 1;  // point A cannot settle in one iteration
@@ -394,8 +384,7 @@ TEST(Cli, ThermalPathResultCarriesConvergedMessageAndSummary) {
 // input exits 2 naming the key; an iteration cap that is too small exits 3 with the
 // diagnostics in -o.
 TEST(Cli, ThermalEhlRunsAndValidates) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/tehl_point_sliding.json");
-  auto point = json::parse(in);
+  auto point = read_case("tehl_point_sliding");
   point["grid"] = {{"nodes", 161}};
   const auto o = run_gearbench("run " + write_case("tehl_point_small", point.dump()));
   ASSERT_EQ(o.exit_code, 0) << o.err;
@@ -430,8 +419,7 @@ TEST(Cli, ThermalEhlRunsAndValidates) {
   EXPECT_FALSE(json::parse(diag)["diagnostics"]["converged"].get<bool>());
   fs::remove(out);
 
-  std::ifstream path_in(GEARBENCH_SOURCE_DIR "/cases/seed001_tehl_path.json");
-  auto path = json::parse(path_in);
+  auto path = read_case("seed001_tehl_path");
   path["grid"] = {{"nodes", 161}};
   const auto p = run_gearbench("run " + write_case("tehl_path_small", path.dump()));
   ASSERT_EQ(p.exit_code, 0) << p.err;

@@ -16,8 +16,7 @@ using nlohmann::json;
 using namespace gearbench::testing_support;
 
 TEST(Cli, DynamicsRunsAndValidates) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics.json");
-  auto j = json::parse(in);
+  auto j = read_case("seed003_spur_dynamics");
   j["runup_cycles"] = 4;
   j["record_cycles"] = 4;
   const auto o = run_gearbench("run " + write_case("dynamics_short", j.dump()));
@@ -88,8 +87,7 @@ TEST(Cli, DynamicsRunsAndValidates) {
 // At 1e6 rpm the run does not reach its periodic response in the run-up; the result says so
 // instead of presenting a transient's dynamic factor as the answer (issue 20).
 TEST(Cli, DynamicsSaysWhenTheRunIsNotPeriodic) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics.json");
-  auto j = json::parse(in);
+  auto j = read_case("seed003_spur_dynamics");
   const auto periodic = run_gearbench("run " + write_case("dynamics_periodic", j.dump()));
   ASSERT_EQ(periodic.exit_code, 0) << periodic.err;
   EXPECT_TRUE(json::parse(periodic.out)["notes"].empty()) << periodic.out.substr(0, 200);
@@ -103,8 +101,7 @@ TEST(Cli, DynamicsSaysWhenTheRunIsNotPeriodic) {
 
 // The dynamics kind reads the efficiency kind's friction section and the backlash.
 TEST(Cli, DynamicsTakesAFrictionLawAndBacklash) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics_friction_backlash.json");
-  auto j = json::parse(in);
+  auto j = read_case("seed003_spur_dynamics_friction_backlash");
   j["runup_cycles"] = 40;
   j["record_cycles"] = 4;
   const auto o = run_gearbench("run " + write_case("dynamics_law_backlash", j.dump()));
@@ -129,8 +126,7 @@ TEST(Cli, DynamicsTakesAFrictionLawAndBacklash) {
 }
 
 TEST(Cli, HerringboneDynamicsRunsSweepsAndValidates) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed000_herringbone_dynamics.json");
-  auto j = json::parse(in);
+  auto j = read_case("seed000_herringbone_dynamics");
   j["runup_cycles"] = 2;
   j["record_cycles"] = 2;
   j["mesh"] = {{"slices", 20}, {"positions", 90}};
@@ -207,8 +203,7 @@ TEST(Cli, HerringboneDynamicsRunsSweepsAndValidates) {
 // the record of its options, its convergence message and summary, exit 3 when a solve misses
 // its tolerance, and every key of its table refused out of range, naming key, value and range.
 TEST(Cli, FeStiffnessRunsAndValidates) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed003_fe_stiffness.json");
-  auto j = json::parse(in);
+  auto j = read_case("seed003_fe_stiffness");
   j["positions"] = 1;
   j["fe"] = {{"degree", 1}, {"max_cycles", 3}, {"tolerance", 0.1}};
   j["mesh"] = {{"near_size_modules", 0.5}, {"far_size_modules", 3.0}};
@@ -271,8 +266,7 @@ TEST(Cli, FeStiffnessRunsAndValidates) {
 // after it (33 s once). With a million run-up cycles this test would not finish were the
 // check after the integration again.
 TEST(Cli, DynamicEfficiencyBeyondTheFrictionLawIsRefusedBeforeTheRun) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed000_herringbone_dynamics.json");
-  auto j = json::parse(in);
+  auto j = read_case("seed000_herringbone_dynamics");
   j["gear_pair"]["normal_module_mm"] = 0.04;
   j["runup_cycles"] = 1000000;
   const auto o = run_gearbench("run " + write_case("herringbone_beyond_friction_law", j.dump()));
@@ -281,8 +275,7 @@ TEST(Cli, DynamicEfficiencyBeyondTheFrictionLawIsRefusedBeforeTheRun) {
 }
 
 TEST(Cli, EfficiencyRunsAndValidates) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed004_spur_efficiency.json");
-  const auto j = json::parse(in);
+  const auto j = read_case("seed004_spur_efficiency");
   const auto o = run_gearbench("run " + write_case("efficiency", j.dump()));
   ASSERT_EQ(o.exit_code, 0) << o.err;
   const auto r = json::parse(o.out);
@@ -307,8 +300,7 @@ TEST(Cli, EfficiencyRunsAndValidates) {
 // phases (about 15 s: each level is a mesh period of thermal EHL solves). A missing τ0 is bad
 // input before the run.
 TEST(Cli, DynamicsTakesTheThermalEhlLaw) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/efficiency_seed004_ehl_thermal.json");
-  const auto e = json::parse(in);
+  const auto e = read_case("efficiency_seed004_ehl_thermal");
   json c = {{"kind", "dynamics"}, {"model", "spur6"}, {"gear_pair", e["gear_pair"]}, {"materials", e["materials"]},
             {"operating", e["operating"]}, {"lubricant", e["lubricant"]},
             {"bearings", {{"stiffness_N_per_m", 1e8}, {"damping_N_s_per_m", 1e3}}}, {"friction", {{"mu", 0.06}}},
@@ -331,10 +323,8 @@ TEST(Cli, DynamicsTakesTheThermalEhlLaw) {
 // 1000/1000-tooth pair returned efficiency_mean -2.24 with exit 0, from the rolling loss of
 // a 24 µm film).
 TEST(Cli, EfficiencyRefusesALossAboveTheInput) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed004_spur_efficiency.json");
-  auto j = json::parse(in);
-  std::ifstream with_oil(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics_friction_backlash.json");
-  const auto oil = json::parse(with_oil);
+  auto j = read_case("seed004_spur_efficiency");
+  const auto oil = read_case("seed003_spur_dynamics_friction_backlash");
   j["lubricant"] = oil["lubricant"];
   j["materials"] = oil["materials"];
   j["friction"] = {{"model", "xu_kahraman"}};

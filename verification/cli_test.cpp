@@ -17,8 +17,7 @@ using nlohmann::json;
 using namespace gearbench::testing_support;
 
 json seed004() {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed004_spur_geometry.json");
-  return json::parse(in);
+  return read_case("seed004_spur_geometry");
 }
 
 TEST(Cli, Seed004GeometryPrintsContactRatio) {
@@ -108,8 +107,7 @@ const BadCase bad_cases[] = {
      "tip interference"},
     {"seed001_printed_tip",
      [](json& j) {
-       std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed001_wind_geometry.json");
-       j = json::parse(in);
+       j = read_case("seed001_wind_geometry");
        j["gear_pair"]["tip_diameter_mm"] = {309.903, 626.35};
      },
      "gear_pair.tip_diameter_mm[0] = 309.903: must exceed the base diameter"},
@@ -182,8 +180,7 @@ TEST(Cli, UnknownKeyIsRefusedWhateverItsValue) {
 // distance that does not fit), and refuses operating points beyond its oil laws instead of
 // an internal error on a NaN film.
 TEST(Cli, MicropittingValidatesThePairAndItsRange) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed001_micropitting.json");
-  const auto seed = json::parse(in);
+  const auto seed = read_case("seed001_micropitting");
   const std::pair<std::function<void(json&)>, std::string> bad[] = {
       {[](json& c) { c["gear_pair"]["teeth"] = {21, 17}; }, "gear_pair.center_distance_mm = 476: incompatible"},
       {[](json& c) {
@@ -293,8 +290,7 @@ TEST(Cli, Seed003StiffnessRuns) {
 }
 
 TEST(Cli, StiffnessBadInput) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_stiffness.json");
-  const auto base = json::parse(in);
+  const auto base = read_case("seed003_spur_stiffness");
   const std::pair<std::function<void(json&)>, std::string> cases[] = {
       {[](json& j) { j["crack"] = {{"type", "tip"}, {"length_mm", 1}, {"angle_deg", 45}}; },
        "crack.type = \"tip\": allowed values are pitch, root"},
@@ -333,8 +329,7 @@ TEST(Cli, StiffnessBadInput) {
 // writes into its own emptied folder, so a leftover of an earlier process with the same pid, or
 // a temporary, shows.
 TEST(Cli, InterruptWritesNothing) {
-  std::ifstream in(GEARBENCH_SOURCE_DIR "/cases/seed004_transient_ehl.json");
-  auto long_run = json::parse(in);
+  auto long_run = read_case("seed004_transient_ehl");
   long_run["time_steps"] = 20000;
   const auto out_dir = temp_path("interrupted_run");
   fs::remove_all(out_dir);

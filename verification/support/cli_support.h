@@ -1,6 +1,6 @@
 #pragma once
 // Running the gearbench executable from a test: its exit code, stdout and stderr; temporary
-// case files; and a run interrupted at a given point of its progress.
+// case files; the case files of cases/; and a run interrupted at a given point of its progress.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,7 +9,9 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
+#include <system_error>
 #include <sys/wait.h>
 #include <utility>
 #include <unistd.h>
@@ -25,11 +27,39 @@ struct Outcome {
   std::string err;
 };
 
+/// The temporary directory of this test process (ctest runs tests in parallel, and several
+/// builds may test at once): emptied when first used, so that nothing an earlier process of the
+/// same pid left behind is met, and removed with all it holds at exit, so that the tests leave
+/// nothing in /tmp (one file per name and pid had piled up to some 20 000).
+class ProcessTempDir {
+ public:
+  ProcessTempDir() : path_(fs::temp_directory_path() / ("gearbench-test-" + std::to_string(::getpid()))) {
+    fs::remove_all(path_);
+    fs::create_directory(path_);
+  }
+  ~ProcessTempDir() {
+    std::error_code ignored;  // a destructor at exit must not throw
+    fs::remove_all(path_, ignored);
+  }
+  ProcessTempDir(const ProcessTempDir&) = delete;
+  ProcessTempDir& operator=(const ProcessTempDir&) = delete;
+
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+/// A temporary path unique to this test process, in its ProcessTempDir.
+inline fs::path temp_path(const std::string& name) {
+  static const ProcessTempDir dir;
+  return dir.path() / name;
+}
+
 /// Runs gearbench; its stdout goes to `stdout_to` when given (then `out` stays empty).
 inline Outcome run_gearbench(const std::string& args, const std::string& stdout_to = "") {
-  const auto dir = fs::temp_directory_path();
-  const auto out_file = dir / ("gb_cli_out_" + std::to_string(::getpid()));
-  const auto err_file = dir / ("gb_cli_err_" + std::to_string(::getpid()));
+  const auto out_file = temp_path("run_stdout");
+  const auto err_file = temp_path("run_stderr");
   const std::string command = std::string("'") + GEARBENCH_EXE + "' " + args + " >'" +
                               (stdout_to.empty() ? out_file.string() : stdout_to) + "' 2>'" + err_file.string() + "'";
   const int status = std::system(command.c_str());
@@ -43,16 +73,19 @@ inline Outcome run_gearbench(const std::string& args, const std::string& stdout_
   return o;
 }
 
-/// A temporary path unique to this test process (ctest runs tests in parallel, and several
-/// builds may test at once).
-inline fs::path temp_path(const std::string& name) {
-  return fs::temp_directory_path() / ("gb_" + name + "_" + std::to_string(::getpid()));
-}
-
 inline std::string write_case(const std::string& name, const std::string& text) {
   const auto path = temp_path("case_" + name + ".json");
   std::ofstream(path) << text;
   return path.string();
+}
+
+/// The case file cases/`name`.json, parsed. It throws naming the file when it cannot be opened,
+/// which fails the test clearly (parsing the unopened stream only said "unexpected end of input").
+inline nlohmann::json read_case(const std::string& name) {
+  const auto path = std::string(GEARBENCH_SOURCE_DIR) + "/cases/" + name + ".json";
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open the case file " + path);
+  return nlohmann::json::parse(in);
 }
 
 /// Runs gearbench with `args`, sends SIGINT once its stderr shows `marker` (so the signal
