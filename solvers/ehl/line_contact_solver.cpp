@@ -58,13 +58,13 @@ void refuse_grid_not_resolving_film(const LineContactProblem& problem, const Ehl
   const double film = problem.isoviscous_film();
   const double h_max = finest_film_spacing * std::sqrt(film);
   const double length = options.domain_out(problem) - options.domain_in(problem);
-  const auto fewest = static_cast<int>(std::ceil(length / h_max)) + 1;
-  int grid = 257;  // the grids of issue 19's range, 2^k + 1 nodes
-  while (grid < fewest) grid = 2 * grid - 1;
+  const double fewest = std::ceil(length / h_max) + 1.0;  // a double: no overflow at extreme loads
+  double grid = 257.0;  // the grids of issue 19's range, 2^k + 1 nodes
+  while (grid < fewest) grid = 2.0 * grid - 1.0;
   throw InputError(fmt::format(
       "grid.nodes = {}: too coarse for the film at this load (Moes' isoviscous film {:.3g} m); allowed are "
-      "≥ {} nodes, a spacing ≤ {:g}·√film (four nodes where the rigid gap grows by one film), e.g. {}; or leave "
-      "grid.nodes out for the grid chosen by grid.target_error",
+      "≥ {:.0f} nodes, a spacing ≤ {:g}·√film (four nodes where the rigid gap grows by one film), e.g. {:.0f}; or "
+      "leave grid.nodes out for the grid chosen by grid.target_error",
       options.nodes, film * problem.film_scale(), fewest, finest_film_spacing, grid));
 }
 
