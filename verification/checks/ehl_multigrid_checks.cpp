@@ -74,7 +74,8 @@ void add_fixed_map_check(int nodes, Tier tier) {
       .unit = "points", .tolerance = {0, 0},
       .justification = "one scheme on a fixed grid: a point that does not converge, or whose converged film is not "
                        "positive, is a failure; the points refused as too coarse for the film are listed in "
-                       "refused_M_L (a grid coarser than that ends 17–83 % thin or with no film at all)",
+                       "refused_M_L (at M ≥ 20 a grid coarser than that ends 10 % to 53 × off, half of them below zero; "
+                       "docs/ehl-model.md)",
       .tier = tier, .run = [nodes](const CheckContext&) { return unconverged_points(nodes); }});
 }
 
