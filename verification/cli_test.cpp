@@ -326,13 +326,12 @@ TEST(Cli, StiffnessBadInput) {
 // (~40 s uninterrupted; the signal comes after the notice at 1 s): with ten times, 3.7 s since
 // the transient's warm steps, a test process held up for 2.7 s under load sent its signal after
 // the result was written (reproduced by delaying the kill, thirty-fourth session). Each run
-// writes into its own emptied folder, so a leftover of an earlier process with the same pid, or
-// a temporary, shows.
+// writes into a folder of its own (in the process's fresh temporary directory), so that a
+// temporary left behind shows.
 TEST(Cli, InterruptWritesNothing) {
   auto long_run = read_case("seed004_transient_ehl");
   long_run["time_steps"] = 20000;
   const auto out_dir = temp_path("interrupted_run");
-  fs::remove_all(out_dir);
   fs::create_directories(out_dir);
   EXPECT_EQ(interrupt_gearbench({"run", write_case("interrupted_transient", long_run.dump()), "-o",
                                  (out_dir / "result.json").string()},
@@ -342,7 +341,6 @@ TEST(Cli, InterruptWritesNothing) {
   fs::remove_all(out_dir);
 
   const auto dir = temp_path("interrupted_verify");
-  fs::remove_all(dir);
   fs::create_directories(dir);
   EXPECT_EQ(interrupt_gearbench({"verify", "--out", dir.string()}, "[2/"), 130);
   EXPECT_TRUE(fs::is_empty(dir)) << "an interrupted verify left files in " << dir;

@@ -150,7 +150,7 @@ void FasMultigrid::Impl::initial_guess(Level& l) {
   double h_in_contact = l.H[0];
   for (std::size_t i = 0; i < l.n; ++i)
     if (std::abs(l.X[i]) < 1.0) h_in_contact = std::min(h_in_contact, l.H[i]);
-  H0_ = film_estimate() - h_in_contact;
+  H0_ = problem_.isoviscous_film() - h_in_contact;
   update_film(l);
   add_inlet_pressure(l);
 }

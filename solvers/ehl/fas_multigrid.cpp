@@ -84,7 +84,7 @@ void FasMultigrid::Impl::qualify_answer(EhlResult& r, bool unestimated) const {
     reject(r, fmt::format("no film on this grid: the converged solution's minimum film is {:.3g} m (Moes' "
                           "estimate of the central film {:.3g} m); {} nodes do not resolve a film this thin: give "
                           "more nodes, or leave grid.nodes out for the grid chosen by grid.target_error",
-                          r.h_min, film_estimate() * problem_.film_scale(), nodes));
+                          r.h_min, problem_.isoviscous_film() * problem_.film_scale(), nodes));
   } else if (unestimated) {
     r.message += fmt::format("; no discretisation-error estimate on {} nodes (no coarser level with a positive "
                              "film to estimate it from), so the residual rule stopped it and the film's accuracy "
@@ -118,7 +118,7 @@ std::size_t FasMultigrid::Impl::coarsest_nodes() const {
   // Half the pressure zone's width scale, the larger of b and ℓ, in X = x/ℓ: 0.5 in Hertzian
   // scaling (ℓ = b); in rigid scaling b ≈ 0.72·M·ℓ, so ℓ/2 up to M ≈ 1.4, b/2 above.
   const double zone = std::max(problem_.hertz_half_width() / problem_.length_scale(), 1.0);
-  return nodes_resolving(std::min(coarsest_zone_spacing * zone, coarsest_film_spacing * std::sqrt(film_estimate())));
+  return nodes_resolving(std::min(coarsest_zone_spacing * zone, coarsest_film_spacing * std::sqrt(problem_.isoviscous_film())));
 }
 
 int FasMultigrid::Impl::levels_for_finest(std::size_t nodes) {
@@ -133,7 +133,7 @@ int FasMultigrid::Impl::levels_for_finest(std::size_t nodes) {
   // no step at M 2.15, L 28.3 on 161 nodes, residual 1e-3 for 60 cycles; with 81 nodes below it
   // 0.25 a cycle, fourteenth session).
   const std::size_t film_nodes =
-      o_.coarsest_nodes > 0 ? coarsest_ : nodes_resolving(coarsest_film_spacing * std::sqrt(film_estimate()));
+      o_.coarsest_nodes > 0 ? coarsest_ : nodes_resolving(coarsest_film_spacing * std::sqrt(problem_.isoviscous_film()));
   if (levels == 1 && intervals % 2 == 0 && intervals / 2 >= film_nodes - 1) {
     intervals /= 2;
     ++levels;
@@ -144,8 +144,6 @@ int FasMultigrid::Impl::levels_for_finest(std::size_t nodes) {
                                  "n0 ≤ {} (e.g. 2049, 4097, 5121)", nodes, max_coarsest_nodes));
   return levels;
 }
-
-double FasMultigrid::Impl::film_estimate() const { return problem_.isoviscous_film(); }
 
 void FasMultigrid::Impl::inject_fields() {
   Level& fine = *levels_.back();

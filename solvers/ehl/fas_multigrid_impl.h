@@ -202,9 +202,6 @@ class FasMultigrid::Impl {
   /// as the sized one, and at least two levels where the film allows (coarsest_ is set to it).
   /// n − 1 = (n_0 − 1)·2^(levels − 1).
   int levels_for_finest(std::size_t nodes);
-  /// Moes' film from the rigid- and elastic-isoviscous asymptotes (Moes 1992, line contact),
-  /// in the problem's film units: the start's H0 and the coarsest grid's film scale.
-  [[nodiscard]] double film_estimate() const;
   /// The transient's (ρ̄H)_old and the thermal factors of the finest grid, injected into
   /// the coarser ones.
   void inject_fields();

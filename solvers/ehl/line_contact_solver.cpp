@@ -54,18 +54,17 @@ double film_spacing_ratio(const LineContactProblem& problem, const EhlOptions& o
 }
 
 void refuse_grid_not_resolving_film(const LineContactProblem& problem, const EhlOptions& options) {
-  if (film_spacing_ratio(problem, options) <= finest_film_spacing) return;
-  const double film = problem.isoviscous_film();
-  const double h_max = finest_film_spacing * std::sqrt(film);
-  const double length = options.domain_out(problem) - options.domain_in(problem);
-  const double fewest = std::ceil(length / h_max) + 1.0;  // a double: no overflow at extreme loads
+  const double ratio = film_spacing_ratio(problem, options);
+  if (ratio <= finest_film_spacing) return;
+  // The intervals scale as 1/h: a double, no overflow at extreme loads.
+  const double fewest = std::ceil(ratio * static_cast<double>(options.nodes - 1) / finest_film_spacing) + 1.0;
   double grid = 257.0;  // the grids of issue 19's range, 2^k + 1 nodes
   while (grid < fewest) grid = 2.0 * grid - 1.0;
   throw InputError(fmt::format(
       "grid.nodes = {}: too coarse for the film at this load (Moes' isoviscous film {:.3g} m); allowed are "
       "≥ {:.0f} nodes, a spacing ≤ {:g}·√film (four nodes where the rigid gap grows by one film), e.g. {:.0f}; or "
       "leave grid.nodes out for the grid chosen by grid.target_error",
-      options.nodes, film * problem.film_scale(), fewest, finest_film_spacing, grid));
+      options.nodes, problem.isoviscous_film() * problem.film_scale(), fewest, finest_film_spacing, grid));
 }
 
 LineContactSolver::LineContactSolver(const LineContactProblem& problem, EhlOptions options)

@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "ehl/line_contact_problem.h"
+#include "ehl/line_contact_solver.h"
+#include "model/errors.h"
 #include "support/convergence.h"
 
 namespace gearbench::verification {
@@ -39,6 +41,17 @@ struct MapPoint {
 /// or (nodes > 0) on that fixed finest grid, solved once per process and grid (the report's maps
 /// and the checks that hold them share the solves).
 const std::vector<MapPoint>& moes_map(int nodes = 0);
+
+/// Whether `gearbench run` accepts the fixed grid of `o` for this contact: the validator itself
+/// (ehl::refuse_grid_not_resolving_film), so that the checks judge what a user gets.
+inline bool grid_accepted(const ehl::LineContactProblem& p, const ehl::EhlOptions& o) {
+  try {
+    ehl::refuse_grid_not_resolving_film(p, o);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
 
 /// The fixed grids issue 19 asks the whole map on.
 inline constexpr int fixed_map_grids[] = {641, 2561, 16385};

@@ -335,10 +335,9 @@ const RegisterSection ehl_fixed_maps(SectionSpec{
       for (int nodes : fixed_map_grids)
         report.notes.push_back({section, fmt::format("**The (M, L) map on {} nodes (issue 19).** The same scheme and "
                                                      "stop as the default, on a fixed finest grid; cells as above. "
-                                                     "Refused: the grid's spacing exceeds 0.35·√H_est, too coarse "
-                                                     "for the film (ehl::finest_film_spacing), which `gearbench run` "
-                                                     "refuses with exit 2.\n\n{}\n",
-                                                     nodes, map_table(moes_map(nodes)))});
+                                                     "Refused: the grid's spacing exceeds {:g}·√H_est, too coarse "
+                                                     "for the film, which `gearbench run` refuses with exit 2.\n\n{}\n",
+                                                     nodes, ehl::finest_film_spacing, map_table(moes_map(nodes)))});
     }});
 
 }  // namespace

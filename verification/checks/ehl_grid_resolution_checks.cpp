@@ -48,7 +48,7 @@ const std::vector<GridTrial>& grid_trials() {
         const auto r = LineContactSolver(problem, o).try_solve();
         const double units = moes_units(data);
         out.push_back({.M = ref.M, .L = ref.L, .nodes = static_cast<double>(nodes),
-                       .ratio = film_spacing_ratio(problem, o), .accepted = film_spacing_ratio(problem, o) <= finest_film_spacing,
+                       .ratio = film_spacing_ratio(problem, o), .accepted = grid_accepted(problem, o),
                        .error = std::max(std::abs(r.h_min * units / ref.H_min - 1.0),
                                          std::abs(r.h_central * units / ref.H_c - 1.0)),
                        .estimated = std::isfinite(r.error_estimate)});
@@ -83,7 +83,8 @@ CheckValue accepted_grids_without_a_film() {
 
 const RegisterCheck accepted_grids(CheckSpec{
     .id = "ehl.multigrid.film_resolution_bound", .section = section, .solver = "ehl",
-    .reference = "issue 19 restated: the validator refuses a fixed grid too coarse for the film (h > 0.35·√H_est)",
+    .reference = fmt::format("issue 19 restated: the validator refuses a fixed grid too coarse for the film (h > {:g}·√H_est)",
+                             finest_film_spacing),
     .quantity = "fixed grids of 65 … 2049 nodes the validation accepts, at M 1–1000 × L 0, 10, whose h_min or h_c is "
                 "50 % or more off the default grid's (or h_min ≤ 0)",
     .unit = "grids", .tolerance = {0, 0},
@@ -102,7 +103,7 @@ void add_resolution_figure(reports::Report& report) {
     s.y.push_back(std::max(t.error, 1e-4));  // a grid on the default grid's film, drawn at the axis
   }
   std::vector<reports::Series> series{std::move(accepted), std::move(refused)};
-  series.push_back({.label = "the bound, 0.35", .x = {finest_film_spacing, finest_film_spacing}, .y = {1e-4, 30.0},
+  series.push_back({.label = fmt::format("the bound, {:g}", finest_film_spacing), .x = {finest_film_spacing, finest_film_spacing}, .y = {1e-4, 30.0},
                     .style = "lines dt 3 lc black"});
   series.push_back({.label = "no film above", .x = {0.02, 2.0}, .y = {1.0, 1.0}, .style = "lines dt 2 lc 8"});
   report.figures.push_back({.id = "ehl_film_resolution", .section = section,
@@ -117,13 +118,14 @@ const RegisterSection resolution_section(SectionSpec{
       add_resolution_figure(report);
       report.notes.push_back(
           {section,
-           "**Grids too coarse for the film** (figure `ehl_film_resolution`, check "
-           "`ehl.multigrid.film_resolution_bound`): fixed grids of 65 … 2049 nodes at M 1–1000, L 0 and 10, against "
-           "the default grid's film. The film is a difference of O(1) terms, so its O(h²) error is measured against "
-           "√H; from about h = 0.5·√H_est the heavy loads' film is lost (an error above 1 is a film below zero). "
-           "`gearbench run` refuses a `grid.nodes` beyond 0.35·√H_est (exit 2, naming the fewest nodes that "
-           "resolve the film); the error at a given ratio grows with the load, so the bound is conservative at "
-           "light loads (docs/ehl-model.md)."});
+           fmt::format("**Grids too coarse for the film** (figure `ehl_film_resolution`, check "
+                       "`ehl.multigrid.film_resolution_bound`): fixed grids of 65 … 2049 nodes at M 1–1000, L 0 and "
+                       "10, against the default grid's film. The film is a difference of O(1) terms, so its O(h²) "
+                       "error is measured against √H; from about h = 0.5·√H_est the heavy loads' film is lost (an "
+                       "error above 1 is a film below zero). `gearbench run` refuses a `grid.nodes` beyond "
+                       "{:g}·√H_est (exit 2, naming the fewest nodes that resolve the film); the error at a given "
+                       "ratio grows with the load, so the bound is conservative at light loads (docs/ehl-model.md).",
+                       finest_film_spacing)});
     }});
 
 }  // namespace

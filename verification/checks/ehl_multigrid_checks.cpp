@@ -69,8 +69,8 @@ void add_fixed_map_check(int nodes, Tier tier) {
       .reference = "issue 19: every in-range (M, L) converges from scratch on every N from 257 to 16385 whose grid "
                    "resolves the film (the validator refuses the rest, exit 2)",
       .quantity = fmt::format("points of M 1–1000 × L 0–25 (step 2.5, ᾱ ≤ 40) on {} nodes, of those whose film the "
-                              "grid resolves (h ≤ 0.35·√H_est), that do not converge or end without a film (h_min ≤ 0)",
-                              nodes),
+                              "grid resolves (h ≤ {:g}·√H_est), that do not converge or end without a film (h_min ≤ 0)",
+                              nodes, finest_film_spacing),
       .unit = "points", .tolerance = {0, 0},
       .justification = "one scheme on a fixed grid: a point that does not converge, or whose converged film is not "
                        "positive, is a failure; the points refused as too coarse for the film are listed in "
@@ -495,12 +495,8 @@ MapPoint solve_map_point(double M, double L, int nodes) {
   pt.in_range = true;
   EhlOptions o;
   o.nodes = nodes;
-  try {
-    refuse_grid_not_resolving_film(*p, o);
-  } catch (const InputError&) {
-    pt.refused = true;
-    return pt;
-  }
+  pt.refused = !grid_accepted(*p, o);
+  if (pt.refused) return pt;
   const auto r = LineContactSolver(*p, o).try_solve();
   pt.converged = r.converged;
   pt.cycles = r.cycles;
