@@ -51,8 +51,10 @@ EhlResult FasMultigrid::Impl::solve(const std::optional<WarmStart>& warm) {
     initial_guess(*levels_.back());
     iterate_to_residual(r);
   } else {
-    full_multigrid(r);  // under the error rule, converges every level to it
-    unestimated = o_.stop == StopRule::discretisation_error && !std::isfinite(r.error_estimate);
+    // Under the error rule, converges every level to it; a level that misses it ends the solve.
+    const bool every_level_met_its_rule = full_multigrid(r);
+    unestimated = o_.stop == StopRule::discretisation_error && every_level_met_its_rule &&
+                  !std::isfinite(r.error_estimate);
     if (failure_.empty() && (o_.stop == StopRule::residual || unestimated)) iterate_to_residual(r);
   }
   if (!failure_.empty()) reject(r, failure_);

@@ -11,6 +11,7 @@
 //   fas_acceleration.cpp     the Anderson acceleration of a level's cycles.
 // The design and the measurements behind it: docs/research/ehl-multigrid-rebuild.md.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstddef>
 #include <limits>
@@ -451,8 +452,8 @@ class FasMultigrid::Impl {
   /// Full multigrid: each level's solution, interpolated, starts the next, which gets one
   /// cycle. The change of H_c and H_min from one level to the next over 2^p − 1 estimates
   /// the discretisation error; with levels chosen by target_error, levels are added until
-  /// the estimate is below it.
-  void full_multigrid(EhlResult& r);
+  /// the estimate is below it. False when a level missed the error rule (r says which).
+  [[nodiscard]] bool full_multigrid(EhlResult& r);
   /// Whether full multigrid stops at `levels` levels: a fixed grid's count, the error target
   /// met (from three levels), or the cap.
   [[nodiscard]] bool grid_complete(const EhlResult& r, std::size_t levels) const;
@@ -483,7 +484,14 @@ class FasMultigrid::Impl {
   /// is left out: p_max does not converge with the grid (docs/ehl-model.md).
   /// `fmg_change`: the level's full-multigrid cycle's change from the interpolated start (the
   /// previous change of the figures' own per-cycle factor).
-  void iterate_to_error(EhlResult& r, std::size_t k, double fmg_change);
+  /// `first_film_estimate`: the estimate a level takes that has none of its own, the first with a
+  /// film after levels without one (update_fmg_level), so that the next level's estimate rests
+  /// on a converged level (NaN: none, as for every other level).
+  void iterate_to_error(EhlResult& r, std::size_t k, double fmg_change,
+                        double first_film_estimate = std::numeric_limits<double>::quiet_NaN());
+  /// The index of the first of the trailing full-multigrid levels whose film is positive (their
+  /// count: none when the last level's is not).
+  [[nodiscard]] static std::size_t first_level_with_film(const EhlResult& r);
   /// Whether level k's full-multigrid cycle alone, which changed the figures by `change` from
   /// the interpolated start, meets iterate_to_error's rule at the factor measured on the last
   /// coarser level that iterated. Accepts the level (r) if so.
@@ -605,9 +613,11 @@ class FasMultigrid::Impl {
   /// and that level's nodes (fmg_cycle_reaches_error); ρ ≥ 1 until one has.
   double measured_factor_ = 1.0;
   std::size_t factor_nodes_ = 0;
-  /// The factor the last level that iterated to its error measured from its own cycles, before
-  /// any floor: the floor of the next level's ρ (iterate_to_error); 0 until a level has.
-  double last_level_factor_ = 0.0;
+  /// The factors the last two levels that iterated to their error measured from their own
+  /// cycles, before any floor, newest last; the larger is the floor of the next level's ρ
+  /// (iterate_to_error, level_factor_floor). 0 until a level has.
+  std::array<double, 2> level_factors_{0.0, 0.0};
+  [[nodiscard]] double level_factor_floor() const { return std::max(level_factors_[0], level_factors_[1]); }
   /// Why the iteration cannot go on (a coarsest grid without a Newton step); empty while it can.
   /// The solve then ends unconverged with this message: a status, not an exception.
   std::string failure_;
