@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <map>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <tuple>
 #include <vector>
@@ -216,16 +217,22 @@ const RegisterCheck map_within_target(CheckSpec{
                      "513 nodes estimating 0.46 % for 0.77 %, which this fails",
     .tier = Tier::full, .run = [](const CheckContext&) { return worst_map_error(); }});
 
-/// Each in-range point's default film against the discrete solution of its own finest grid (a
-/// scaled residual of 1e-8, the algebraic error's reference), over error_fraction × the solve's
-/// own estimate: the stop rule's claim, that the algebraic error it leaves is below that bound.
-CheckValue worst_algebraic_error_share() {
-  const double fraction = EhlOptions{}.error_fraction;
+/// Each in-range point's film on `nodes` (0: the default grid) against the discrete solution of
+/// its own finest grid (a scaled residual of 1e-8, the algebraic error's reference), over
+/// error_fraction × the solve's own estimate: the stop rule's claim, that the algebraic error it
+/// leaves is below that bound. Points refused, unconverged or without an estimate (the residual
+/// rule stopped them, and they claim none) are left out.
+struct AlgebraicErrorShare {
   double worst = 0.0;
   Point where{};
   nlohmann::json points = nlohmann::json::array();
-  for (const auto& pt : moes_map()) {
-    if (!pt.in_range) continue;
+};
+
+AlgebraicErrorShare algebraic_error_shares(int nodes) {
+  const double fraction = EhlOptions{}.error_fraction;
+  AlgebraicErrorShare shares;
+  for (const auto& pt : moes_map(nodes)) {
+    if (!pt.in_range || pt.refused || !pt.converged || !std::isfinite(pt.error_estimate)) continue;
     const auto d = LineContactData::from_moes(pt.M, pt.L);
     EhlOptions o;
     o.nodes = static_cast<int>(pt.nodes);
@@ -236,17 +243,40 @@ CheckValue worst_algebraic_error_share() {
     const double error = std::max(std::abs(pt.H_c / (discrete.h_central * units) - 1.0),
                                   std::abs(pt.H_min / (discrete.h_min * units) - 1.0));
     const double share = error / (fraction * pt.error_estimate);
-    points.push_back({pt.M, pt.L, pt.nodes, error, pt.error_estimate, share});
-    if (share > worst) {
-      worst = share;
-      where = {pt.M, pt.L};
+    shares.points.push_back({pt.M, pt.L, pt.nodes, error, pt.error_estimate, share});
+    if (share > shares.worst) {
+      shares.worst = share;
+      shares.where = {pt.M, pt.L};
     }
   }
-  return CheckValue{worst, 0.0,
-                    {{"worst_M_L", {where.M, where.L}},
-                     {"columns", "M, L, default nodes, algebraic error of H_c or H_min (the larger), the default's "
-                                 "estimate, their ratio over error_fraction"},
-                     {"points", points}}};
+  return shares;
+}
+
+constexpr const char* share_columns = "M, L, nodes, algebraic error of H_c or H_min (the larger), the solve's "
+                                      "estimate, their ratio over error_fraction";
+
+CheckValue worst_algebraic_error_share() {
+  const auto shares = algebraic_error_shares(0);
+  return CheckValue{shares.worst, 0.0,
+                    {{"worst_M_L", {shares.where.M, shares.where.L}},
+                     {"columns", share_columns},
+                     {"points", shares.points}}};
+}
+
+/// The same claim on every fixed grid of the maps (coarse_map_grids and fixed_map_grids).
+CheckValue worst_fixed_grid_algebraic_error_share() {
+  double worst = 0.0;
+  nlohmann::json where, grids = nlohmann::json::object();
+  for (const auto& grid : {std::span<const int>(coarse_map_grids), std::span<const int>(fixed_map_grids)})
+    for (int nodes : grid) {
+      const auto shares = algebraic_error_shares(nodes);
+      grids[std::to_string(nodes)] = shares.points;
+      if (shares.worst > worst) {
+        worst = shares.worst;
+        where = {shares.where.M, shares.where.L, nodes};
+      }
+    }
+  return CheckValue{worst, 0.0, {{"worst_M_L_nodes", where}, {"columns", share_columns}, {"grids", grids}}};
 }
 
 // Twenty-third session: with ρ the residual's factor alone the ratio reached 1.20 at (10, 20)
@@ -263,6 +293,26 @@ const RegisterCheck map_algebraic_error(CheckSpec{
                      "reference's own algebraic error is below 1e-7 of the film (1e-8 against 1e-10 where both converge), "
                      "the smallest bound 6e-5",
     .tier = Tier::full, .run = [](const CheckContext&) { return worst_algebraic_error_share(); }});
+
+// Thirty-fifth session: on the fixed grids the claim does not hold. Worst per grid: 257 nodes
+// 0.12, 513 0.48, 641 0.69, 1025 1.25 (200, 5), 2049 2.15 (5, 7.5), 2561 1.83 (100, 10), 16385
+// 2.69 (10, 17.5). On the fine grids the estimate is small (8e-5 at (10, 17.5) on 16385 nodes)
+// and one cycle moves H_min by more than the bound: there the cycle after full multigrid took
+// H_min from 2.1e-6 to 2.2e-5 off its discrete solution while its change read a contraction of
+// 0.13. Recorded as missed at the figure reached, as the work target is; a change of it by more
+// than 5 % either way fails until it is recorded anew (research log, thirty-fifth session).
+const RegisterCheck fixed_grid_algebraic_error(CheckSpec{
+    .id = "ehl.multigrid.fixed_grid_algebraic_error", .section = section, .solver = solver,
+    .reference = "each point's grid solved to a scaled residual of 1e-8 (its discrete solution)",
+    .quantity = "largest algebraic error of H_c and H_min over error_fraction × the solve's own "
+                "discretisation-error estimate, M 1–1000 × L 0–25 (ᾱ ≤ 40) on the fixed grids 257 … 16385 "
+                "that resolve the film",
+    .unit = "-", .tolerance = {1.0, 0},
+    .justification = "the stop rule's claim, as ehl.multigrid.map_algebraic_error holds it on the default grid: a "
+                     "ratio above 1 is an answer further from its grid's discrete solution than the solve says. "
+                     "Not met on fixed grids, where a user's grid.nodes can make the estimate small",
+    .tier = Tier::full, .run = [](const CheckContext&) { return worst_fixed_grid_algebraic_error_share(); },
+    .recorded = 2.69, .recorded_tolerance = 0.05});
 
 /// The grids on which the observed order is asymptotic at the order points (eleventh session):
 /// 257/513/1025 is not at (2, 10), where H_c's order reads 2.46, 2.29, 1.83, 1.89 on the
@@ -415,7 +465,7 @@ const RegisterCheck work_target(CheckSpec{
     .justification = "the issue's bound: 0 ± 20 WU. Counted in sweeps of the finest grid, every level and stage "
                      "included (restriction as a sweep of the coarse grid, dense steps by their flops)",
     .tier = Tier::fast, .run = [](const CheckContext&) { return work_to_error(); },
-    .recorded = 72.76, .recorded_tolerance = 0.05});
+    .recorded = 74.61, .recorded_tolerance = 0.05});
 
 /// The figure of issue 19's work target: each benchmark point's whole solve and, within it, full
 /// multigrid's one cycle a level (the work before the stop rule's further cycles,
