@@ -305,8 +305,8 @@ const RegisterCheck fixed_grid_algebraic_error(CheckSpec{
     .id = "ehl.multigrid.fixed_grid_algebraic_error", .section = section, .solver = solver,
     .reference = "each point's grid solved to a scaled residual of 1e-8 (its discrete solution)",
     .quantity = "largest algebraic error of H_c and H_min over error_fraction × the solve's own "
-                "discretisation-error estimate, M 1–1000 × L 0–25 (ᾱ ≤ 40) on the fixed grids 257 … 16385 "
-                "that resolve the film",
+                "discretisation-error estimate, M 1–1000 × L 0–25 (ᾱ ≤ 40) on the maps' fixed grids (257, 513, "
+                "641, 1025, 2049, 2561 and 16385 nodes) where they resolve the film",
     .unit = "-", .tolerance = {1.0, 0},
     .justification = "the stop rule's claim, as ehl.multigrid.map_algebraic_error holds it on the default grid: a "
                      "ratio above 1 is an answer further from its grid's discrete solution than the solve says. "
