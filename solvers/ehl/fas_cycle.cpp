@@ -142,8 +142,7 @@ bool FasMultigrid::Impl::full_multigrid(EhlResult& r) {
     // cycle at the residual's factor, the finest grid's H_min was up to 1.7 × the bound off its
     // discrete solution at 5 of the default map's 71 points).
     const double fmg_change = change_of(watched(*levels_[k]), start);
-    const double first_film_estimate = std::isfinite(r.error_estimate) ? r.error_estimate : last_change_estimate(r);
-    if (finest || !fmg_cycle_reaches_error(r, k, fmg_change)) iterate_to_error(r, k, fmg_change, first_film_estimate);
+    if (finest || !fmg_cycle_reaches_error(r, k, fmg_change)) iterate_to_error(r, k, fmg_change, last_change_estimate(r));
     // A level below the finest that misses its error is the residual iteration's start all the
     // same (iterate_to_residual decides the outcome); under the error rule the solve ends there.
     if (!r.converged && error_rule) return false;

@@ -18,6 +18,7 @@
 #include <memory>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -467,8 +468,8 @@ class FasMultigrid::Impl {
   // --- stop and figures (fas_stop.cpp) ----------------------------------------
   /// The relative change of a figure between the full-multigrid levels `back` and `back` + 1
   /// below the last (0: the last level's change).
-  [[nodiscard]] static double level_change(const std::vector<double>& figures, std::size_t back = 0);
-  [[nodiscard]] static double level_error_estimate(const std::vector<double>& figures, double p);
+  [[nodiscard]] static double level_change(std::span<const double> figures, std::size_t back = 0);
+  [[nodiscard]] static double level_error_estimate(std::span<const double> figures, double p);
   /// A new full-multigrid level: the previous level's h_min and p_max become the coarse ones.
   void record_fmg_level(EhlResult& r, std::size_t k);
 
@@ -484,9 +485,9 @@ class FasMultigrid::Impl {
   /// is left out: p_max does not converge with the grid (docs/ehl-model.md).
   /// `fmg_change`: the level's full-multigrid cycle's change from the interpolated start (the
   /// previous change of the figures' own per-cycle factor).
-  /// `first_film_estimate`: the estimate a level takes that has none of its own, the first with a
+  /// `first_film_estimate`: the estimate while the level has none of its own, the first with a
   /// film after levels without one (update_fmg_level), so that the next level's estimate rests
-  /// on a converged level (NaN: none, as for every other level).
+  /// on a converged level (NaN: none).
   void iterate_to_error(EhlResult& r, std::size_t k, double fmg_change,
                         double first_film_estimate = std::numeric_limits<double>::quiet_NaN());
   /// The index of the first of the trailing full-multigrid levels whose film is positive (their

@@ -55,12 +55,12 @@ void FasMultigrid::Impl::record_fmg_level(EhlResult& r, std::size_t k) {
 ///   as δ_k itself;
 /// - at order p the error cannot fall faster than 2^p a level, so it is at least
 ///   δ_{k−1}/(2^p(2^p − 1)), whatever a last change that happens to be small says.
-double FasMultigrid::Impl::level_change(const std::vector<double>& figures, std::size_t back) {
+double FasMultigrid::Impl::level_change(std::span<const double> figures, std::size_t back) {
   const std::size_t n = figures.size();
   return relative(figures[n - 1 - back], figures[n - 2 - back]);
 }
 
-double FasMultigrid::Impl::level_error_estimate(const std::vector<double>& figures, double p) {
+double FasMultigrid::Impl::level_error_estimate(std::span<const double> figures, double p) {
   const double last = level_change(figures);
   if (figures.size() < 3) return last;
   const double previous = level_change(figures, 1);
@@ -99,10 +99,9 @@ void FasMultigrid::Impl::update_fmg_level(EhlResult& r, std::size_t k) {
     r.error_estimate = std::numeric_limits<double>::infinity();
     return;
   }
-  const auto from = static_cast<std::ptrdiff_t>(first);
-  const std::vector<double> H_c(r.fmg_H_c.begin() + from, r.fmg_H_c.end());
-  const std::vector<double> H_min(r.fmg_H_min.begin() + from, r.fmg_H_min.end());
-  r.error_estimate = std::max(level_error_estimate(H_c, order), level_error_estimate(H_min, order_h_min));
+  const auto filmed = [first](const std::vector<double>& by_level) { return std::span(by_level).subspan(first); };
+  r.error_estimate =
+      std::max(level_error_estimate(filmed(r.fmg_H_c), order), level_error_estimate(filmed(r.fmg_H_min), order_h_min));
 }
 
 std::size_t FasMultigrid::Impl::first_level_with_film(const EhlResult& r) {
@@ -173,7 +172,7 @@ void FasMultigrid::Impl::iterate_to_error(EhlResult& r, std::size_t k, double fm
   double previous_change = fmg_change;
   const double previous_residual = scaled_residual(fine);  // after the level's full-multigrid cycle
   auto acceleration = start_acceleration(fine);
-  double estimate = std::isfinite(r.error_estimate) ? r.error_estimate : first_film_estimate;
+  const auto level_estimate = [&] { return std::isfinite(r.error_estimate) ? r.error_estimate : first_film_estimate; };
   for (int c = 0; c < o_.max_cycles; ++c) {
     counted_as_iterating([&] {
       if (c > 0) accelerate(acceleration, fine, r);
@@ -187,7 +186,7 @@ void FasMultigrid::Impl::iterate_to_error(EhlResult& r, std::size_t k, double fm
     before = now;
     // The estimate is the level's against the converged coarser levels, with this cycle's figures.
     update_fmg_level(r, k);
-    estimate = std::isfinite(r.error_estimate) ? r.error_estimate : first_film_estimate;
+    const double estimate = level_estimate();
     const double bound = o_.error_fraction * estimate;
     // ρ is the larger of the residual's last two factors and the figures' own: the residual,
     // a mean over the grid, contracts faster than H_min at the outlet where the spike's
@@ -223,7 +222,7 @@ void FasMultigrid::Impl::iterate_to_error(EhlResult& r, std::size_t k, double fm
   }
   reject(r, fmt::format("EHL multigrid did not reach {:g} of its discretisation-error estimate {:.2g} on {} nodes "
                         "in {} cycles (last residual {:.3e}, force balance {:.3e})",
-                        o_.error_fraction, estimate, fine.n, r.cycles, last(r.residual_history),
+                        o_.error_fraction, level_estimate(), fine.n, r.cycles, last(r.residual_history),
                         last(r.force_history)));
 }
 
