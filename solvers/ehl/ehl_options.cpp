@@ -90,7 +90,8 @@ model::OptionTable<EhlOptions> make_grid_table() {
            {.description = "accept the solve at a fraction of its discretisation-error estimate, or at a residual "
                            "tolerance (a tolerance given without stop asks for the residual rule)"});
   t.number("error_fraction", &EhlOptions::error_fraction, Range{0.0, 1.0, true, false},
-           {.description = "discretisation-error rule: per-cycle changes below this fraction of the estimate"});
+           {.description = "discretisation-error rule: the algebraic error a cycle's change of H_c, H_min, H0 and "
+                           "the pressurised film leaves below this fraction of the estimate"});
   t.number("tolerance", &EhlOptions::tolerance, Range{0.0, 1.0, true, true},
            {.description = "residual rule: scaled residual and force balance below it"});
   t.after_read([](model::ObjectReader& g, EhlOptions& o) {

@@ -156,9 +156,11 @@ class FasMultigrid::Impl {
     double seconds = 0.0;
   };
 
-  /// The figures the stop rule watches, dimensionless.
+  /// The figures the stop rule watches, dimensionless, and the level's film and pressure,
+  /// whose change over the pressurised zone it watches beside them (change_of).
   struct Watched {
     double H_c = 0.0, H_min = 0.0, H0 = 0.0;
+    std::vector<double> H, P;
   };
 
   // --- hierarchy (fas_multigrid.cpp) ---------------------------------------------------
@@ -479,8 +481,8 @@ class FasMultigrid::Impl {
   /// estimate is recomputed from them.
   void update_fmg_level(EhlResult& r, std::size_t k);
 
-  /// Cycles on level k until the per-cycle change of H_c, H_min and H0 and the force balance
-  /// are below error_fraction of the discretisation-error estimate, which is recomputed each
+  /// Cycles on level k until the algebraic error left (change_of, times ρ/(1 − ρ)) and the force
+  /// balance are below error_fraction of the discretisation-error estimate, which is recomputed each
   /// cycle from the level's figures and the converged coarser levels'. The Barus pressure spike
   /// is left out: p_max does not converge with the grid (docs/ehl-model.md).
   /// `fmg_change`: the level's full-multigrid cycle's change from the interpolated start (the
@@ -500,8 +502,12 @@ class FasMultigrid::Impl {
   /// The discretisation error the last full-multigrid change alone gives, δ_k/(2^p − 1) for
   /// H_c and H_min: at most the level's estimate (level_error_estimate).
   [[nodiscard]] static double last_change_estimate(const EhlResult& r);
-  /// The largest relative change of H_c, H_min and H0 (H0's against H_c) between two states.
+  /// The largest relative change between two states of H_c, H_min and H0 (H0's against H_c).
+  [[nodiscard]] static double figures_change(const Watched& now, const Watched& before);
+  /// figures_change and film_change, the larger: the change the stop rule reads.
   [[nodiscard]] static double change_of(const Watched& now, const Watched& before);
+  /// The largest change of the film at a node pressurised in either state, over H_min.
+  [[nodiscard]] static double film_change(const Watched& now, const Watched& before);
   /// The discretisation-error rule as the result states it, at the bound of the last level.
   [[nodiscard]] std::string error_rule(double bound) const;
 

@@ -15,8 +15,8 @@
 //   - coarse grids with their own ε and ρ̄ and the fine film injected (FAS); the coarsest grid
 //     solved directly in (P, H0) (coarsest_solve.h);
 // The design and its measurements: docs/research/ehl-multigrid-rebuild.md.
-//   - the solve stops when the per-cycle change of H_c, H_min and H0 is a small fraction of
-//     its own discretisation-error estimate (or at a residual tolerance, if asked);
+//   - the solve stops when the per-cycle change of H_c, H_min, H0 and the pressurised film is a
+//     small fraction of its own discretisation-error estimate (or at a residual tolerance, if asked);
 //   - the deformation integral by zero-padded FFT convolution (O(n log n) per sweep).
 #include <algorithm>
 #include <limits>
@@ -68,8 +68,9 @@ struct EhlOptions {
   int post_sweeps = 1;            ///< relaxations after it                             [0, 20]
   int max_cycles = 60;            ///< cycles on the finest grid before a failure        [1, 100000]
   StopRule stop = StopRule::discretisation_error;
-  /// Discretisation-error rule: accept when the per-cycle change of H_c, H_min and H0, and
-  /// the force balance, are below this fraction of the error estimate.         (0, 1]
+  /// Discretisation-error rule: accept when the algebraic error the per-cycle change of H_c,
+  /// H_min, H0 and the pressurised film leaves, and the force balance, are below this fraction
+  /// of the error estimate.                                                     (0, 1]
   double error_fraction = 0.1;
   double tolerance = 1e-8;        ///< residual rule: scaled residual and force balance (0, 1)
   // Relaxation (docs/research/ehl-multigrid-rebuild.md, eighth to tenth sessions).

@@ -281,7 +281,8 @@ CheckValue worst_fixed_grid_algebraic_error_share() {
 
 // Twenty-third session: with ρ the residual's factor alone the ratio reached 1.20 at (10, 20)
 // (H_min contracting at 0.126 a cycle where the residual did at 0.073); with the figures' own
-// factor beside it, 0.66 at worst, median 0.05.
+// factor beside it, 0.66 at worst, median 0.05. Thirty-sixth: 0.74 → 0.45, the rule watching the
+// pressurised film beside the figures.
 const RegisterCheck map_algebraic_error(CheckSpec{
     .id = "ehl.multigrid.map_algebraic_error", .section = section, .solver = solver,
     .reference = "each point's finest grid solved to a scaled residual of 1e-8 (its discrete solution)",
@@ -294,13 +295,15 @@ const RegisterCheck map_algebraic_error(CheckSpec{
                      "the smallest bound 6e-5",
     .tier = Tier::full, .run = [](const CheckContext&) { return worst_algebraic_error_share(); }});
 
-// Thirty-fifth session: on the fixed grids the claim does not hold. Worst per grid: 257 nodes
-// 0.12, 513 0.48, 641 0.69, 1025 1.25 (200, 5), 2049 2.15 (5, 7.5), 2561 1.83 (100, 10), 16385
-// 2.69 (10, 17.5). On the fine grids the estimate is small (8e-5 at (10, 17.5) on 16385 nodes)
-// and one cycle moves H_min by more than the bound: there the cycle after full multigrid took
-// H_min from 2.1e-6 to 2.2e-5 off its discrete solution while its change read a contraction of
-// 0.13. Recorded as missed at the figure reached, as the work target is; a change of it by more
-// than 5 % either way fails until it is recorded anew (research log, thirty-fifth session).
+// Thirty-fifth session: on the fixed grids the claim did not hold, worst 2.69 at (10, 17.5) on
+// 16385 nodes, where the cycle after full multigrid took H_min from 2.1e-6 to 2.2e-5 off its
+// discrete solution while its change read a contraction of 0.13. Thirty-sixth: the rule watches
+// the film over the pressurised zone beside the figures (the spike's film, unconverged, carries
+// its error to H_min); worst per grid 257 nodes 0.13, 513 0.21, 641 0.69, 1025 0.64, 2049 0.87,
+// 2561 1.65 (5, 7.5), 16385 0.74. At (5, 7.5) on 2561 nodes H_min's error falls 0.5 in the cycle
+// accepted where every measure read ≤ 0.22. Recorded as missed at the figure reached, as the work
+// target is; a change of it by more than 5 % either way fails until it is recorded anew
+// (research log, thirty-fifth and thirty-sixth sessions).
 const RegisterCheck fixed_grid_algebraic_error(CheckSpec{
     .id = "ehl.multigrid.fixed_grid_algebraic_error", .section = section, .solver = solver,
     .reference = "each point's grid solved to a scaled residual of 1e-8 (its discrete solution)",
@@ -310,9 +313,10 @@ const RegisterCheck fixed_grid_algebraic_error(CheckSpec{
     .unit = "-", .tolerance = {1.0, 0},
     .justification = "the stop rule's claim, as ehl.multigrid.map_algebraic_error holds it on the default grid: a "
                      "ratio above 1 is an answer further from its grid's discrete solution than the solve says. "
-                     "Not met on fixed grids, where a user's grid.nodes can make the estimate small",
+                     "Not met on one fixed grid (2561 nodes), where H_min converges slower than every measure "
+                     "the rule reads",
     .tier = Tier::full, .run = [](const CheckContext&) { return worst_fixed_grid_algebraic_error_share(); },
-    .recorded = 2.69, .recorded_tolerance = 0.05});
+    .recorded = 1.65, .recorded_tolerance = 0.05});
 
 /// The grids on which the observed order is asymptotic at the order points (eleventh session):
 /// 257/513/1025 is not at (2, 10), where H_c's order reads 2.46, 2.29, 1.83, 1.89 on the
@@ -456,6 +460,9 @@ CheckValue work_to_error() {
 // that the report says so and a change of that figure by more than 5 % either way fails until
 // it is recorded anew. Full multigrid with one cycle a level takes 16–19 WU on 4097–16385 nodes;
 // the stop rule's further cycles 13–34 (docs/research/ehl-multigrid-sessions.md, "Thirtieth session").
+// Thirty-sixth session: 74.61 → 91.27 ((10, 17.5) on 257 nodes), the stop rule watching the film
+// over the pressurised zone, whose cycles the figures alone had accepted with H_min up to 2.7 ×
+// the rule's bound off its discrete solution.
 const RegisterCheck work_target(CheckSpec{
     .id = "ehl.multigrid.work_to_error", .section = section, .solver = solver,
     .reference = "issue 19: at most 20 work units to the discretisation error at every N",
@@ -465,7 +472,7 @@ const RegisterCheck work_target(CheckSpec{
     .justification = "the issue's bound: 0 ± 20 WU. Counted in sweeps of the finest grid, every level and stage "
                      "included (restriction as a sweep of the coarse grid, dense steps by their flops)",
     .tier = Tier::fast, .run = [](const CheckContext&) { return work_to_error(); },
-    .recorded = 74.61, .recorded_tolerance = 0.05});
+    .recorded = 91.27, .recorded_tolerance = 0.05});
 
 /// The figure of issue 19's work target: each benchmark point's whole solve and, within it, full
 /// multigrid's one cycle a level (the work before the stop rule's further cycles,
