@@ -10,7 +10,6 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <unistd.h>
 
 #include "bench_section.h"
 #include "model/errors.h"
@@ -18,6 +17,7 @@
 #include "perf_history.h"
 #include "perf_range.h"
 #include "support/perf_support.h"
+#include "support/temp_dir.h"
 
 namespace gearbench::reports {
 namespace {
@@ -163,7 +163,7 @@ TEST(PerfRange, RegressionFlaggedAtTheCommitWhereItAppearsAcrossAFailedBuild) {
 // A benchmark run still writing (or killed while writing) its raw output, .bench-<pid>.json in
 // the records' folder, is not a record and must not stop `verify` or `report perf`.
 TEST(PerfHistory, HalfWrittenBenchOutputIsNotARecord) {
-  const auto dir = fs::temp_directory_path() / ("gearbench_perf_hidden_" + std::to_string(::getpid()));
+  const auto dir = gearbench::testing_support::temp_path("perf_hidden");
   fs::create_directories(dir);
   std::ofstream(dir / ".bench-1880.json") << "{\"benchmarks\": [";
   std::vector<PerfRun> runs;
@@ -201,7 +201,7 @@ TEST(PerfRangeCli, TinyRangeWithAFakeBuildWritesJoinsAndFlags) {
   // benchmarks crash and one that does not build. The fake build script "builds" a commit into
   // an executable that writes Google Benchmark JSON with the commit's time; the runner sees
   // only the script's contract.
-  const auto dir = fs::temp_directory_path() / ("gb_perf_range_" + std::to_string(::getpid()));
+  const auto dir = gearbench::testing_support::temp_path("perf_range");
   fs::remove_all(dir);
   fs::create_directories(dir / "repo");
   const auto repo = (dir / "repo").string();
@@ -277,7 +277,7 @@ TEST(PerfRangeCli, EachCommitRunsOnItsOwnFilesAndBuild) {
   // made from the same file, as BM_Startup starts gearbench. Two commits, 1 ms and 2 ms, are
   // built one after the other in the same worktree: each must report its own time, not the
   // last-built commit's.
-  const auto dir = fs::temp_directory_path() / ("gb_perf_tree_" + std::to_string(::getpid()));
+  const auto dir = gearbench::testing_support::temp_path("perf_tree");
   fs::remove_all(dir);
   fs::create_directories(dir / "repo" / "scripts");
   fs::create_directories(dir / "repo" / "cases");

@@ -9,7 +9,6 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include "bench_ratios.h"
 #include "bench_section.h"
@@ -18,6 +17,7 @@
 #include "model/errors.h"
 #include "perf_history.h"
 #include "report.h"
+#include "support/temp_dir.h"
 
 namespace gearbench::reports {
 namespace {
@@ -175,7 +175,7 @@ TEST(PerfHistory, RejectsWhatIsNotARecordAndBadOptions) {
 }
 
 TEST(FigureCsv, DataNextToTheFigureWithoutNaN) {
-  const auto path = std::filesystem::temp_directory_path() / ("gb_fig_" + std::to_string(::getpid()) + ".csv");
+  const auto path = gearbench::testing_support::temp_path("fig.csv");
   Figure f{.id = "f", .section = "s", .title = "t", .xlabel = "commit", .ylabel = "time, ms",
            .series = {{"machine \"A\"", {0.0, 1.0}, {1.5, std::nan("")}}}};
   f.xtic_labels = {"aaa", "bbb"};
@@ -196,7 +196,7 @@ TEST(Provenance, HardwareFingerprintIsStableAndRecorded) {
 
 TEST(PerfCli, ReportPerfFlagsTheNewestRegressionAndWritesFigures) {
   namespace fs = std::filesystem;
-  const auto dir = fs::temp_directory_path() / ("gb_perf_cli_" + std::to_string(::getpid()));
+  const auto dir = gearbench::testing_support::temp_path("perf_cli");
   fs::remove_all(dir);
   fs::create_directories(dir / "records");
   std::ofstream(dir / "records" / "a.json")
@@ -216,7 +216,7 @@ TEST(PerfCli, ReportPerfFlagsTheNewestRegressionAndWritesFigures) {
 }
 
 TEST(PerfCli, BenchRejectsBadRepetitionsBeforeRunningAnything) {
-  const auto log = std::filesystem::temp_directory_path() / ("gb_bench_bad_" + std::to_string(::getpid()));
+  const auto log = gearbench::testing_support::temp_path("bench_bad");
   EXPECT_EQ(run_gearbench("bench --record --repetitions 0 --out '" + log.string() + "_dir'", log), 2);
   EXPECT_NE(slurp(log).find("--repetitions = 0"), std::string::npos) << slurp(log);
   EXPECT_FALSE(std::filesystem::exists(log.string() + "_dir"));
@@ -225,7 +225,7 @@ TEST(PerfCli, BenchRejectsBadRepetitionsBeforeRunningAnything) {
 
 TEST(PerfCli, ReportPdfDrawsEveryFigureOfAReport) {
   namespace fs = std::filesystem;
-  const auto dir = fs::temp_directory_path() / ("gb_pdf_cli_" + std::to_string(::getpid()));
+  const auto dir = gearbench::testing_support::temp_path("pdf_cli");
   fs::remove_all(dir);
   fs::create_directories(dir);
   Report r;

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "model/plugin.h"
+#include "support/temp_dir.h"
 
 namespace gearbench {
 namespace {
@@ -36,7 +36,7 @@ TEST(Plugin, AbsentNamesWhereItLookedAndHowToBuildIt) {
 }
 
 TEST(Plugin, PresentButNotLoadableIsReportedNotSkipped) {
-  const auto path = fs::temp_directory_path() / ("gb_plugin_" + std::to_string(::getpid()) + ".so");
+  const auto path = gearbench::testing_support::temp_path("plugin.so");
   std::ofstream(path) << "not a shared object\n";
   const auto message = error_of({path.filename().string(), path.string(), "the broken reference"}, "entry");
   fs::remove(path);

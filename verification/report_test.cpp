@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "compare.h"
 #include "report.h"
+#include "support/temp_dir.h"
 
 namespace gearbench::reports {
 namespace {
@@ -121,7 +121,7 @@ TEST(Headline, JsonAndMarkdownCarryTheCounts) {
 }
 
 TEST(WriteReport, NeverOverwritesAndLeavesNoTemporary) {
-  const auto dir = std::filesystem::temp_directory_path() / ("gearbench_report_test_" + std::to_string(::getpid()));
+  const auto dir = gearbench::testing_support::temp_path("report_test");
   std::filesystem::remove_all(dir);
   Report r;
   r.tier = "fast";
@@ -143,7 +143,7 @@ TEST(Figure, ColourMapKeepsItsValues) {
   Figure f{.id = "field", .section = "s", .title = "t", .xlabel = "x [mm]", .ylabel = "y [mm]",
            .series = {{"field", {0.0, 0.5, 1.0}, {0.0, 0.25, 1.0}, {2.0, std::nan(""), 3.5}}},
            .colour_label = "von Mises [MPa]"};
-  const auto csv = std::filesystem::temp_directory_path() / ("gearbench_colour_" + std::to_string(::getpid()) + ".csv");
+  const auto csv = gearbench::testing_support::temp_path("colour.csv");
   write_figure_csv(f, csv.string());
   std::ifstream in(csv);
   std::string header, row0, row1;

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
-#include <unistd.h>
+#include "support/temp_dir.h"
 
 namespace {
 
@@ -31,7 +31,7 @@ int run_sweep(const fs::path& dir, const std::string& launcher, const std::strin
 }
 
 TEST(SweepMpi, SameTableForOneAndTwoRanks) {
-  const auto dir = fs::temp_directory_path() / ("gb_sweep_mpi_" + std::to_string(::getpid()));
+  const auto dir = gearbench::testing_support::temp_path("sweep_mpi");
   fs::remove_all(dir);
   fs::create_directories(dir);
   // 3 × 3 geometry and efficiency figures with one failing case (teeth 5 is below the

@@ -8,11 +8,11 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include "model/errors.h"
 #include "model/json_reader.h"
 #include "sweep_command.h"
+#include "support/temp_dir.h"
 
 namespace gearbench::app {
 namespace {
@@ -148,7 +148,7 @@ TEST(SweepRun, MissingOutputAndUnknownKindAreCaseErrors) {
 }
 
 TEST(SweepCli, WritesTableAndFiguresAndExitsOneOnFailedCases) {
-  const auto dir = fs::temp_directory_path() / ("gb_sweep_cli_" + std::to_string(::getpid()));
+  const auto dir = gearbench::testing_support::temp_path("sweep_cli");
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "eff.json") << efficiency_sweep().dump();
