@@ -14,9 +14,9 @@ using nlohmann::json;
 using testing_support::run_gearbench;
 using testing_support::write_case;
 
-json read_case(const std::string& name) {
-  std::ifstream in(std::string(GEARBENCH_SOURCE_DIR) + "/cases/" + name);
-  return json::parse(in);
+/// The case file cases/`file` (its name with the extension), parsed.
+json read_case_file(const std::string& file) {
+  return testing_support::read_json_file(testing_support::cases_dir() / file);
 }
 
 /// The result without what legitimately differs between two runs (timings, and the summary
@@ -44,7 +44,7 @@ void expect_round_trip(const std::string& file) {
   const auto named = run_gearbench("run '" + std::string(GEARBENCH_SOURCE_DIR) + "/cases/" + file + "'");
   ASSERT_EQ(named.exit_code, 0) << named.err;
   const auto named_result = json::parse(named.out);
-  json typed = read_case(file);
+  json typed = read_case_file(file);
   const auto& echo = named_result.at("lubricant_resolved");
   for (const auto& [path, resolved] : echo.items()) {
     json& section = path == "lubricant" ? typed["lubricant"] : typed["micropitting"]["oil"];
@@ -78,7 +78,7 @@ TEST(LubricantCli, EveryLubricatedKindHasACaseThatNamesItsOil) {
   std::map<std::string, bool> lubricated;  // kind -> some case names its oil
   for (const auto& entry : std::filesystem::directory_iterator(std::string(GEARBENCH_SOURCE_DIR) + "/cases")) {
     if (entry.path().extension() != ".json") continue;
-    const json c = read_case(entry.path().filename().string());
+    const json c = testing_support::read_json_file(entry.path());
     if (!c.is_object() || !c.contains("kind")) continue;
     const bool has_lubricant = c.contains("lubricant") || (c.contains("micropitting") && c["micropitting"].contains("oil"));
     if (!has_lubricant) continue;
@@ -112,7 +112,7 @@ TEST(LubricantCli, BadNamesAndTemperaturesExitTwo) {
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_EQ(unknown.err.rfind("error: oil.name = \"ISO VG 330 minral\": unknown oil (nearest known: 'ISO VG 320 "
                               "mineral')", 0), 0u) << unknown.err;
-  json c = read_case("efficiency_iso_vg220_mineral_70C.json");
+  json c = testing_support::read_case("efficiency_iso_vg220_mineral_70C");
   c["operating"]["oil_temperature_C"] = 160;
   const auto hot = run_gearbench("run '" + write_case("hot", c.dump()) + "'");
   EXPECT_EQ(hot.exit_code, 2);

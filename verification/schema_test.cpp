@@ -14,6 +14,9 @@
 
 namespace {
 
+using gearbench::testing_support::cases_dir;
+using gearbench::testing_support::read_case;
+using gearbench::testing_support::read_json_file;
 using gearbench::testing_support::run_gearbench;
 using nlohmann::json;
 namespace fs = std::filesystem;
@@ -94,11 +97,6 @@ class SchemaCheck {
   json root_;
 };
 
-json read_case(const fs::path& path) {
-  std::ifstream in(path);
-  return json::parse(in);
-}
-
 /// The case files of cases/, each with its kind's schema.
 struct SchemaCase {
   fs::path path;
@@ -110,7 +108,7 @@ std::vector<SchemaCase> cases_with_schema() {
   std::vector<SchemaCase> out;
   for (const auto& entry : fs::directory_iterator(GEARBENCH_SOURCE_DIR "/cases")) {
     if (entry.path().extension() != ".json") continue;
-    auto value = read_case(entry.path());
+    auto value = read_json_file(entry.path());
     const auto o = run_gearbench("schema " + value["kind"].get<std::string>());
     EXPECT_EQ(o.exit_code, 0) << entry.path() << ": " << o.err;
     out.push_back({entry.path(), std::move(value), json::parse(o.out)});
@@ -174,7 +172,8 @@ struct TwoVariants {
 };
 TwoVariants two_variants(const std::string& kind, const std::string& first, const std::string& second) {
   TwoVariants v{SchemaCheck(json::parse(run_gearbench("schema " + kind).out)),
-                read_case(GEARBENCH_SOURCE_DIR "/cases/" + first), read_case(GEARBENCH_SOURCE_DIR "/cases/" + second)};
+                read_json_file(cases_dir() / first),
+                read_json_file(cases_dir() / second)};
   EXPECT_TRUE(v.check.errors(v.first).empty()) << first;
   EXPECT_TRUE(v.check.errors(v.second).empty()) << second;
   return v;
@@ -203,7 +202,7 @@ TEST(Schema, DynamicsChoosesTheModelsKeys) {
 TEST(Schema, DynamicsDefaultsAreTheOnesTheSolverGets) {
   const auto schema = json::parse(run_gearbench("schema dynamics").out);
   const auto& spur6 = schema["allOf"][0]["then"]["properties"];
-  auto c = read_case(GEARBENCH_SOURCE_DIR "/cases/seed003_spur_dynamics.json");
+  auto c = read_case("seed003_spur_dynamics");
   c["runup_cycles"] = 2;
   c["record_cycles"] = 2;
   c.erase("friction");
@@ -270,11 +269,11 @@ TEST(Schema, AllKindsSchemaChoosesEachKindsOwn) {
   EXPECT_EQ(all["properties"]["kind"]["enum"].size(), 11u);
   EXPECT_FALSE(all.contains("$comment"));
   const SchemaCheck check(all);
-  auto geometry = read_case(GEARBENCH_SOURCE_DIR "/cases/seed004_spur_geometry.json");
+  auto geometry = read_case("seed004_spur_geometry");
   EXPECT_TRUE(check.errors(geometry).empty());
   geometry["gear_pair"]["not_a_key"] = 1;  // the geometry kind's own schema is the one applied
   EXPECT_EQ(check.errors(geometry), std::vector<std::string>{"case.gear_pair.not_a_key: unknown key"});
-  auto herringbone = read_case(GEARBENCH_SOURCE_DIR "/cases/seed000_herringbone_dynamics.json");
+  auto herringbone = read_case("seed000_herringbone_dynamics");
   EXPECT_TRUE(check.errors(herringbone).empty());
   herringbone["mesh"]["not_a_key"] = 1;  // through $ref and the model's branch
   EXPECT_EQ(check.errors(herringbone), std::vector<std::string>{"case.mesh.not_a_key: unknown key"});

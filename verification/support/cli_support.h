@@ -52,14 +52,19 @@ inline std::string write_case(const std::string& name, const std::string& text) 
   return path.string();
 }
 
-/// The case file cases/`name`.json, parsed. It throws naming the file when it cannot be opened,
-/// which fails the test clearly (parsing the unopened stream only said "unexpected end of input").
-inline nlohmann::json read_case(const std::string& name) {
-  const auto path = std::string(GEARBENCH_SOURCE_DIR) + "/cases/" + name + ".json";
+/// A JSON file, parsed. It throws naming the file when it cannot be opened, which fails the
+/// test clearly (parsing the unopened stream only said "unexpected end of input").
+inline nlohmann::json read_json_file(const fs::path& path) {
   std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open the case file " + path);
+  if (!in) throw std::runtime_error("cannot open the file " + path.string());
   return nlohmann::json::parse(in);
 }
+
+/// The directory of the repository's case files.
+inline fs::path cases_dir() { return fs::path(GEARBENCH_SOURCE_DIR) / "cases"; }
+
+/// The case file cases/`name`.json, parsed (read_json_file).
+inline nlohmann::json read_case(const std::string& name) { return read_json_file(cases_dir() / (name + ".json")); }
 
 /// Runs gearbench with `args`, sends SIGINT once its stderr shows `marker` (so the signal
 /// lands in the middle of the work whatever the machine's load, not at a fixed delay), and
