@@ -14,11 +14,6 @@ using nlohmann::json;
 using testing_support::run_gearbench;
 using testing_support::write_case;
 
-/// The case file cases/`file` (its name with the extension), parsed.
-json read_case_file(const std::string& file) {
-  return testing_support::read_json_file(testing_support::cases_dir() / file);
-}
-
 /// The result without what legitimately differs between two runs (timings, and the summary
 /// line that quotes them) and the echo.
 json comparable(json r) {
@@ -44,7 +39,7 @@ void expect_round_trip(const std::string& file) {
   const auto named = run_gearbench("run '" + std::string(GEARBENCH_SOURCE_DIR) + "/cases/" + file + "'");
   ASSERT_EQ(named.exit_code, 0) << named.err;
   const auto named_result = json::parse(named.out);
-  json typed = read_case_file(file);
+  json typed = testing_support::read_json_file(testing_support::cases_dir() / file);
   const auto& echo = named_result.at("lubricant_resolved");
   for (const auto& [path, resolved] : echo.items()) {
     json& section = path == "lubricant" ? typed["lubricant"] : typed["micropitting"]["oil"];

@@ -8,7 +8,6 @@
 
 namespace gearbench::ehl {
 
-/// One grid of the hierarchy with its unknowns, coefficients and FAS right-hand sides.
 struct FasLevel {
   FasLevel(std::size_t nodes, double x_in, double x_out)
       : n(nodes), h((x_out - x_in) / static_cast<double>(nodes - 1)), deformation(nodes, h),
