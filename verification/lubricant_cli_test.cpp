@@ -36,7 +36,7 @@ json comparable(json r) {
 
 /// Runs the named case, then the case with its resolved numbers typed, and compares.
 void expect_round_trip(const std::string& file) {
-  const auto named = run_gearbench("run '" + std::string(GEARBENCH_SOURCE_DIR) + "/cases/" + file + "'");
+  const auto named = run_gearbench("run '" + (testing_support::cases_dir() / file).string() + "'");
   ASSERT_EQ(named.exit_code, 0) << named.err;
   const auto named_result = json::parse(named.out);
   json typed = testing_support::read_json_file(testing_support::cases_dir() / file);
@@ -71,7 +71,7 @@ bool names_oil(const json& section) {
 // "micropitting": {"oil"}); a new lubricated kind without a named case fails here.
 TEST(LubricantCli, EveryLubricatedKindHasACaseThatNamesItsOil) {
   std::map<std::string, bool> lubricated;  // kind -> some case names its oil
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(GEARBENCH_SOURCE_DIR) + "/cases")) {
+  for (const auto& entry : std::filesystem::directory_iterator(testing_support::cases_dir())) {
     if (entry.path().extension() != ".json") continue;
     const json c = testing_support::read_json_file(entry.path());
     if (!c.is_object() || !c.contains("kind")) continue;

@@ -106,7 +106,7 @@ struct SchemaCase {
 
 std::vector<SchemaCase> cases_with_schema() {
   std::vector<SchemaCase> out;
-  for (const auto& entry : fs::directory_iterator(GEARBENCH_SOURCE_DIR "/cases")) {
+  for (const auto& entry : fs::directory_iterator(cases_dir())) {
     if (entry.path().extension() != ".json") continue;
     auto value = read_json_file(entry.path());
     const auto o = run_gearbench("schema " + value["kind"].get<std::string>());
