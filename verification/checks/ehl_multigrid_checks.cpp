@@ -304,8 +304,9 @@ const RegisterCheck map_algebraic_error(CheckSpec{
 // accepted where every measure read ≤ 0.22. Thirty-seventh: every setting measured (free-boundary
 // sweeps, W depth, the spike solve's order, fewer cycles below the finest) moves the worst grid
 // and leaves it at 1.0–1.7: early change ratios run below the finest level's slow (spike) mode.
-// Recorded as missed at the figure reached, as the work target is; a change of it by more than 5 %
-// either way fails until it is recorded anew (research log, thirty-fifth to thirty-seventh sessions).
+// Thirty-eighth: the figures' factor read over the level's last two cycles, as the residual's is
+// (fas_stop.cpp): 257 0.13, 513 0.21, 641 0.69, 1025 0.64, 2049 0.87 (2, 5), 2561 0.54, 16385 0.58
+// (and 4097 0.63, 8193 0.60 outside this check); (5, 7.5) on 2561 nodes 0.09 (research log).
 const RegisterCheck fixed_grid_algebraic_error(CheckSpec{
     .id = "ehl.multigrid.fixed_grid_algebraic_error", .section = section, .solver = solver,
     .reference = "each point's grid solved to a scaled residual of 1e-8 (its discrete solution)",
@@ -315,10 +316,8 @@ const RegisterCheck fixed_grid_algebraic_error(CheckSpec{
     .unit = "-", .tolerance = {1.0, 0},
     .justification = "the stop rule's claim, as ehl.multigrid.map_algebraic_error holds it on the default grid: a "
                      "ratio above 1 is an answer further from its grid's discrete solution than the solve says. "
-                     "Not met on one fixed grid (2561 nodes), where H_min converges slower than every measure "
-                     "the rule reads",
-    .tier = Tier::full, .run = [](const CheckContext&) { return worst_fixed_grid_algebraic_error_share(); },
-    .recorded = 1.65, .recorded_tolerance = 0.05});
+                     "The reference's own algebraic error is below 1e-7 of the film",
+    .tier = Tier::full, .run = [](const CheckContext&) { return worst_fixed_grid_algebraic_error_share(); }});
 
 /// The grids on which the observed order is asymptotic at the order points (eleventh session):
 /// 257/513/1025 is not at (2, 10), where H_c's order reads 2.46, 2.29, 1.83, 1.89 on the
