@@ -51,8 +51,8 @@ ThermalRheology::ThermalRheology(const model::ThermalLubricant& data, double inl
     throw InputError(fmt::format("lubricant: the inlet viscosity {:.3g} Pa·s is below the Roelands "
                                  "asymptote 6.31e-5 Pa·s", eta0_));
   z_ = roelands_z_from_alpha(eta0_, data.pressure_viscosity);
-  S0_ = data.temperature_viscosity * (T0_ - roelands_temperature) /
-        (std::log(eta0_) + roelands_ln_eta_inf);
+  roelands_scale_ = std::log(eta0_) + roelands_ln_eta_inf;
+  S0_ = data.temperature_viscosity * (T0_ - roelands_temperature) / roelands_scale_;
 }
 
 double ThermalRheology::walther_kinematic_viscosity(double T) const {
@@ -91,7 +91,7 @@ double ThermalRheology::AtPressure::viscosity(double T, double* dln_dT) const {
   // ln η = ln η0 + (ln η0 + 9.67)·[−1 + PF·θ^(−S0)], θ = (T − 138)/(T0 − 138):
   // ∂ln η/∂T = −(ln η0 + 9.67)·PF·S0·θ^(−S0)/(T − 138).
   const double theta = (T - roelands_temperature) / (r.T0_ - roelands_temperature);
-  const double a = std::log(r.eta0_) + roelands_ln_eta_inf;
+  const double a = r.roelands_scale_;  // once per oil, not per node: a log less per temperature
   const double term = pressure_factor_ * std::pow(theta, -r.S0_);
   if (dln_dT) *dln_dT = -a * term * r.S0_ / (T - roelands_temperature);
   return r.eta0_ * std::exp(a * (-1.0 + term));

@@ -61,6 +61,7 @@ class ThermalRheology {
   double T0_ = 0.0;
   std::optional<WaltherLine> walther_;  ///< set for the Ubbelohde–Walther form
   double eta0_ = 0.0, z_ = 0.0, S0_ = 0.0;
+  double roelands_scale_ = 0.0;  ///< ln η0 + 9.67: Roelands' exponent scale, a constant of the oil
 };
 
 }  // namespace gearbench::lubricant
