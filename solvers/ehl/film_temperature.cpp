@@ -4,7 +4,6 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_linalg.h>
 #include <gsl/gsl_roots.h>
 #include <limits>
 #include <memory>
@@ -23,20 +22,6 @@ double integrate_graded(const std::vector<double>& y, const std::vector<double>&
   return sum;
 }
 
-/// Solves the tridiagonal system (sub, diag, sup)·x = rhs with GSL (gsl_linalg_solve_tridiag).
-std::vector<double> solve_tridiagonal(const std::vector<double>& sub, const std::vector<double>& diag,
-                                      const std::vector<double>& sup, const std::vector<double>& rhs) {
-  model::gsl_use_status_codes();
-  std::vector<double> x(diag.size());
-  gsl_vector_const_view d = gsl_vector_const_view_array(diag.data(), diag.size());
-  gsl_vector_const_view e = gsl_vector_const_view_array(sup.data(), sup.size());
-  gsl_vector_const_view f = gsl_vector_const_view_array(sub.data(), sub.size());
-  gsl_vector_const_view b = gsl_vector_const_view_array(rhs.data(), rhs.size());
-  gsl_vector_view out = gsl_vector_view_array(x.data(), x.size());
-  model::gsl_check(gsl_linalg_solve_tridiag(&d.vector, &e.vector, &f.vector, &b.vector, &out.vector),
-                   "tridiagonal solve of a film-temperature column");
-  return x;
-}
 }  // namespace
 
 FilmTemperature::FilmTemperature(std::vector<double> x, double Ua, double Ub, double half_width,
@@ -91,6 +76,7 @@ FilmTemperature::FilmTemperature(std::vector<double> x, double Ua, double Ub, do
     const double t = static_cast<double>(k) / static_cast<double>(s_.size() - 1);
     s_[k] = depth_ * t * t;
   }
+  for (int body = 0; body < 2; ++body) solid_rows_[body] = conduction_rows(body);
   T_.assign(x_.size(), std::vector<double>(zeta_.size(), T0_));
   for (auto& body : Ts_) body.assign(x_.size(), std::vector<double>(s_.size(), T0_));
   flows_.resize(x_.size());
@@ -219,6 +205,20 @@ std::vector<double> FilmTemperature::mass_flux_profile(const ColumnFlow& flow, d
   return Q;
 }
 
+FilmTemperature::SolidRows FilmTemperature::conduction_rows(int body) const {
+  const double ks = solids_.conductivity[body];
+  SolidRows rows;
+  rows.convection = solids_.density[body] * solids_.specific_heat[body] * (body == 0 ? Ua_ : Ub_) / dx_;
+  rows.deeper.assign(s_.size(), 0.0);
+  rows.shallower.assign(s_.size(), 0.0);
+  for (std::size_t kk = 1; kk + 1 < s_.size(); ++kk) {
+    const double span = s_[kk + 1] - s_[kk - 1];
+    rows.deeper[kk] = 2.0 * ks / (span * (s_[kk + 1] - s_[kk]));
+    rows.shallower[kk] = 2.0 * ks / (span * (s_[kk] - s_[kk - 1]));
+  }
+  return rows;
+}
+
 void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, const std::vector<double>& h) {
   const std::size_t nz = zeta_.size(), ns = s_.size(), n = x_.size();
   const double dz = 1.0 / static_cast<double>(nz - 1);
@@ -226,7 +226,10 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
   const ColumnFlow& flow = flows_[i];
   // The shear stress at the column's shear rate and this sweep's temperature, and ∂ln η/∂T
   // per film node for the source slope.
-  std::vector<double> stress(nz), dln_eta(nz);
+  std::vector<double>& stress = column_.stress;
+  std::vector<double>& dln_eta = column_.dln_eta;
+  stress.resize(nz);
+  dln_eta.resize(nz);
   const auto at_p = rheology_.at_pressure(p[i]);
   for (std::size_t j = 0; j < nz; ++j) {
     const double eta = at_p.viscosity(T_[i][j], &dln_eta[j]), rate = flow.shear_rate[j];
@@ -235,7 +238,8 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
   const double k = rheology_.data().thermal_conductivity, c = rheology_.data().specific_heat;
   const double hi = h[i];
   // ∂Q/∂x at fixed ζ from the neighbouring columns.
-  std::vector<double> Qx(nz, 0.0);
+  std::vector<double>& Qx = column_.Qx;
+  Qx.resize(nz);
   for (std::size_t j = 0; j < nz; ++j)
     Qx[j] = i + 1 < n ? (Q_[i + 1][j] - Q_[i - 1][j]) / (2.0 * dx_) : (Q_[i][j] - Q_[i - 1][j]) / dx_;
 
@@ -245,13 +249,8 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
   auto row_a = [&](std::size_t kk) { return na - kk; };
   auto row_film = [&](std::size_t j) { return na + j; };
   auto row_b = [&](std::size_t kk) { return na + nz - 1 + kk; };
-  std::vector<double> sub(N - 1, 0.0), diag(N, 0.0), sup(N - 1, 0.0), rhs(N, 0.0);
-  auto add = [&](std::size_t r, double prev, double d, double next, double b) {
-    if (r > 0) sub[r - 1] += prev;
-    diag[r] += d;
-    if (r + 1 < N) sup[r] += next;
-    rhs[r] += b;
-  };
+  TridiagonalSystem& system = column_.system;
+  system.reset(N);
 
   // Heat source S = S* + S'·(T − T*) about the last temperature T* (Patankar 1980, §4.2.5):
   // shear heating τ·∂u/∂z at the frozen shear rate falls with temperature as the stress does,
@@ -282,19 +281,17 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
 
   // Solids: ρ_s c_s U_s (T − T_upstream)/Δx = k_s ∂²T/∂s² on the graded nodes.
   for (int body = 0; body < 2; ++body) {
-    const double ks = solids_.conductivity[body];
-    const double C = solids_.density[body] * solids_.specific_heat[body] * (body == 0 ? Ua_ : Ub_) / dx_;
+    const SolidRows& rows = solid_rows_[body];
+    const double C = rows.convection;
     for (std::size_t kk = 1; kk + 1 < ns; ++kk) {
-      const double span = s_[kk + 1] - s_[kk - 1];
-      const double deeper = 2.0 * ks / (span * (s_[kk + 1] - s_[kk]));
-      const double shallower = 2.0 * ks / (span * (s_[kk] - s_[kk - 1]));
+      const double deeper = rows.deeper[kk], shallower = rows.shallower[kk];
       double b = C * Ts_[body][i - 1][kk];
       const bool deepest = kk + 2 == ns;
       if (deepest) b += deeper * T0_;
       if (body == 0)  // ordering deep → shallow: the deeper node is the previous row
-        add(row_a(kk), deepest ? 0.0 : -deeper, C + deeper + shallower, -shallower, b);
+        system.add(row_a(kk), deepest ? 0.0 : -deeper, C + deeper + shallower, -shallower, b);
       else            // ordering shallow → deep
-        add(row_b(kk), -shallower, C + deeper + shallower, deepest ? 0.0 : -deeper, b);
+        system.add(row_b(kk), -shallower, C + deeper + shallower, deepest ? 0.0 : -deeper, b);
     }
   }
 
@@ -322,7 +319,7 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
       d -= v / dz;
       next += v / dz;
     }
-    add(row_film(j), prev, d, next, b);
+    system.add(row_film(j), prev, d, next, b);
   }
 
   // Walls: half-cell energy balances with conduction from the film and the solid, the
@@ -338,12 +335,12 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
     const double b = storage * T_[i - 1][j] + half * (S.value - S.slope * T_[i][j]);
     const double d = film_g + solid_g + storage - half * S.slope;
     if (body == 0)  // neighbours: solid a's first node (previous row), the film (next)
-      add(row_film(j), -solid_g, d, -film_g, b);
+      system.add(row_film(j), -solid_g, d, -film_g, b);
     else
-      add(row_film(j), -film_g, d, -solid_g, b);
+      system.add(row_film(j), -film_g, d, -solid_g, b);
   }
 
-  const std::vector<double> T = solve_tridiagonal(sub, diag, sup, rhs);
+  const std::vector<double>& T = system.solve("film temperature column");
   for (std::size_t j = 0; j < nz; ++j) T_[i][j] = T[row_film(j)];
   for (std::size_t kk = 1; kk + 1 < ns; ++kk) {
     Ts_[0][i][kk] = T[row_a(kk)];

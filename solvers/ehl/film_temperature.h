@@ -16,12 +16,13 @@
 // Discretisation: first-order upwind in x (backward where u ≥ 0, forward in reverse flow),
 // second-order differences across the film and into the solids (quadratically graded
 // solid nodes), half-cell energy balances at the walls; each column is one tridiagonal
-// solve (GSL), the columns are swept Gauss–Seidel fashion from the inlet.
+// solve (tridiagonal_system.h), the columns are swept Gauss–Seidel fashion from the inlet.
 #include <array>
 #include <optional>
 #include <vector>
 
 #include "column_flow.h"
+#include "tridiagonal_system.h"
 #include "lubricant/rheology.h"
 #include "lubricant/thermal_rheology.h"
 #include "model/materials.h"
@@ -118,6 +119,13 @@ class FilmTemperature {
   /// One Gauss–Seidel sweep over the columns, downstream then upstream; the largest change [K].
   double sweep(const std::vector<double>& p, const std::vector<double>& h);
   void solve_column(std::size_t i, const std::vector<double>& p, const std::vector<double>& h);
+  /// The conduction coefficients of a solid's rows on the graded nodes and its convection per
+  /// Δx: the same for every column, so set once (constructor).
+  struct SolidRows {
+    double convection = 0.0;                ///< ρ_s c_s U_s/Δx
+    std::vector<double> deeper, shallower;  ///< per node k: the coefficients of T_{k+1}, T_{k−1}
+  };
+  [[nodiscard]] SolidRows conduction_rows(int body) const;
   [[nodiscard]] std::vector<double> mass_flux_profile(const ColumnFlow& flow, double h) const;
 
   std::vector<double> x_;
@@ -134,6 +142,13 @@ class FilmTemperature {
   std::vector<ColumnFlow> flows_;                      ///< each column's flow of this solve()
   std::vector<std::vector<double>> Q_;                 ///< Q(x_i, ζ_j) [kg/(m·s)], relaxed towards flows_' (solve)
   std::vector<double> wall_stress_;  ///< each column's Eyring root τ_a of the last solve() (NaN: none yet), a Newton start
+  std::array<SolidRows, 2> solid_rows_;
+  /// A column solve's work space, kept between columns (a sweep solves 2(n − 1) columns of
+  /// the same size: allocating per column cost a tenth of the sweeps' instructions).
+  struct ColumnWorkspace {
+    std::vector<double> stress, dln_eta, Qx;
+    TridiagonalSystem system;
+  } column_;
 };
 
 }  // namespace gearbench::ehl
