@@ -10,20 +10,6 @@
 
 namespace gearbench::ehl {
 
-double film_integral(const std::vector<double>& y) {
-  const std::size_t n = y.size() - 1;  // intervals
-  const double d = 1.0 / static_cast<double>(n);
-  if (n == 1) return 0.5 * d * (y[0] + y[1]);
-  const std::size_t simpson_end = n % 2 == 0 ? n : n - 3;
-  double sum = 0.0;
-  for (std::size_t j = 0; j + 2 <= simpson_end; j += 2) sum += d / 3.0 * (y[j] + 4.0 * y[j + 1] + y[j + 2]);
-  if (simpson_end != n) {
-    const std::size_t j = simpson_end;
-    sum += 3.0 * d / 8.0 * (y[j] + 3.0 * y[j + 1] + 3.0 * y[j + 2] + y[j + 3]);
-  }
-  return sum;
-}
-
 double eyring_wall_stress(const std::vector<double>& zeta, const std::vector<double>& viscosity, double sliding,
                           double dpdx, double h, double eyring_stress, std::optional<double> guess) {
   const std::size_t nz = zeta.size();
@@ -70,13 +56,20 @@ double eyring_wall_stress(const std::vector<double>& zeta, const std::vector<dou
 ColumnFlow column_flow(const std::vector<double>& zeta, std::vector<double> viscosity, std::vector<double> density,
                        double Ua, double Ub, double dpdx, double h, std::optional<double> eyring_stress,
                        std::optional<double> wall_stress_guess) {
-  const std::size_t nz = zeta.size();
-  const double dz = 1.0 / static_cast<double>(nz - 1);
-  const double dU = Ub - Ua;
   ColumnFlow c;
   c.viscosity = std::move(viscosity);
   c.rho = std::move(density);
+  complete_column_flow(zeta, Ua, Ub, dpdx, h, eyring_stress, wall_stress_guess, c);
+  return c;
+}
+
+void complete_column_flow(const std::vector<double>& zeta, double Ua, double Ub, double dpdx, double h,
+                          std::optional<double> eyring_stress, std::optional<double> wall_stress_guess, ColumnFlow& c) {
+  const std::size_t nz = zeta.size();
+  const double dz = 1.0 / static_cast<double>(nz - 1);
+  const double dU = Ub - Ua;
   c.eta_star = c.viscosity;
+  c.eyring_wall_stress = 0.0;
   if (eyring_stress) {
     const double tau_a = eyring_wall_stress(zeta, c.viscosity, dU, dpdx, h, *eyring_stress, wall_stress_guess);
     c.eyring_wall_stress = tau_a;
@@ -91,12 +84,9 @@ ColumnFlow column_flow(const std::vector<double>& zeta, std::vector<double> visc
   }
   c.eta_e = 1.0 / c.f0.back();
   c.eta_e_prime = 1.0 / c.f1.back();
-  std::vector<double> y(nz);
   c.rho_e = film_integral(c.rho);
-  for (std::size_t j = 0; j < nz; ++j) y[j] = c.rho[j] * c.f0[j];
-  c.rho_e1 = film_integral(y);
-  for (std::size_t j = 0; j < nz; ++j) y[j] = c.rho[j] * c.f1[j];
-  c.rho_e2 = film_integral(y);
+  c.rho_e1 = film_integral(nz, [&c](std::size_t j) { return c.rho[j] * c.f0[j]; });
+  c.rho_e2 = film_integral(nz, [&c](std::size_t j) { return c.rho[j] * c.f1[j]; });
   const double ratio = c.eta_e / c.eta_e_prime;
   c.u.resize(nz);
   c.shear_rate.resize(nz);
@@ -106,7 +96,6 @@ ColumnFlow column_flow(const std::vector<double>& zeta, std::vector<double> visc
     c.shear_rate[j] = (dpdx * h * (zeta[j] - ratio) + c.eta_e * dU / h) / c.eta_star[j];
     c.stress[j] = c.eta_star[j] * c.shear_rate[j];
   }
-  return c;
 }
 
 }  // namespace gearbench::ehl

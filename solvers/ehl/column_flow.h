@@ -47,15 +47,39 @@ ColumnFlow column_flow(const std::vector<double>& zeta, std::vector<double> visc
                        double Ua, double Ub, double dpdx, double h, std::optional<double> eyring_stress,
                        std::optional<double> wall_stress_guess = std::nullopt);
 
+/// The same in place: the rest of `c` from its viscosity and rho (set by the caller), reusing
+/// c's storage (the temperature solve evaluates every column's flow twice per iteration, and
+/// nine allocations per flow cost a tenth of those evaluations).
+void complete_column_flow(const std::vector<double>& zeta, double Ua, double Ub, double dpdx, double h,
+                          std::optional<double> eyring_stress, std::optional<double> wall_stress_guess, ColumnFlow& c);
+
 /// The Ree–Eyring wall stress τ_a of a column: the root of the trapezoidal no-slip condition
 /// Σ w_j·γ̇_j(τ_a + ∂p/∂x·h·ζ_j) = (U_b − U_a)/h. Exposed for its tests. `guess` (a root
 /// nearby, e.g. the column's of the last sweep) only shortens the Newton steps.
 double eyring_wall_stress(const std::vector<double>& zeta, const std::vector<double>& viscosity, double sliding,
                           double dpdx, double h, double eyring_stress, std::optional<double> guess = std::nullopt);
 
-/// ∫₀¹ y dζ on uniform nodes: composite Simpson, with Simpson's 3/8 rule on the last three
-/// intervals when their number is odd; both are exact for cubics, so the isothermal
-/// Newtonian integrals (quadratic in ζ) come out exact.
-double film_integral(const std::vector<double>& y);
+/// ∫₀¹ y dζ on `nodes` uniform nodes, y(j) the value at node j: composite Simpson, with
+/// Simpson's 3/8 rule on the last three intervals when their number is odd; both are exact for
+/// cubics, so the isothermal Newtonian integrals (quadratic in ζ) come out exact.
+template <class Values>
+double film_integral(std::size_t nodes, Values y) {
+  const std::size_t n = nodes - 1;  // intervals
+  const double d = 1.0 / static_cast<double>(n);
+  if (n == 1) return 0.5 * d * (y(0) + y(1));
+  const std::size_t simpson_end = n % 2 == 0 ? n : n - 3;
+  double sum = 0.0;
+  for (std::size_t j = 0; j + 2 <= simpson_end; j += 2) sum += d / 3.0 * (y(j) + 4.0 * y(j + 1) + y(j + 2));
+  if (simpson_end != n) {
+    const std::size_t j = simpson_end;
+    sum += 3.0 * d / 8.0 * (y(j) + 3.0 * y(j + 1) + 3.0 * y(j + 2) + y(j + 3));
+  }
+  return sum;
+}
+
+/// ∫₀¹ y dζ of nodal values y (film_integral above).
+inline double film_integral(const std::vector<double>& y) {
+  return film_integral(y.size(), [&y](std::size_t j) { return y[j]; });
+}
 
 }  // namespace gearbench::ehl

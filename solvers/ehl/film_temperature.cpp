@@ -107,17 +107,28 @@ double FilmTemperature::dpdx_at(const std::vector<double>& p, std::size_t i, dou
   return (p[i + 1] - p[i - 1]) / (2.0 * dx);
 }
 
-ColumnFlow FilmTemperature::column_flow(std::size_t i, double p, double dpdx, double h) const {
-  const std::size_t nz = zeta_.size();
-  std::vector<double> eta(nz), rho(nz);
+void FilmTemperature::column_flow(std::size_t i, double p, double dpdx, double h, ColumnFlow& flow) const {
   const auto at_p = rheology_.at_pressure(p);  // the column's nodes share p: one pressure factor
-  for (std::size_t j = 0; j < nz; ++j) {
-    eta[j] = at_p.viscosity(T_[i][j]);
-    rho[j] = rheology_.density(p, T_[i][j]);
-  }
+  flow.viscosity.resize(zeta_.size());
+  for (std::size_t j = 0; j < zeta_.size(); ++j) flow.viscosity[j] = at_p.viscosity(T_[i][j]);
+  complete_flow(i, p, dpdx, h, flow);
+}
+
+void FilmTemperature::complete_flow(std::size_t i, double p, double dpdx, double h, ColumnFlow& flow) const {
+  flow.rho.resize(zeta_.size());
+  for (std::size_t j = 0; j < zeta_.size(); ++j) flow.rho[j] = rheology_.density(p, T_[i][j]);
   std::optional<double> guess;
   if (std::isfinite(wall_stress_[i])) guess = wall_stress_[i];
-  return ehl::column_flow(zeta_, std::move(eta), std::move(rho), Ua_, Ub_, dpdx, h, eyring_stress_, guess);
+  complete_column_flow(zeta_, Ua_, Ub_, dpdx, h, eyring_stress_, guess, flow);
+}
+
+const FilmTemperature::NodeViscosity& FilmTemperature::node_viscosity(std::size_t i, std::size_t j) {
+  NodeViscosity& v = viscosity_[i][j];
+  if (!(v.T == T_[i][j])) {
+    v.T = T_[i][j];
+    v.eta = at_pressure_[i].viscosity(v.T, &v.dln_dT);
+  }
+  return v;
 }
 
 double FilmTemperature::flux_carrying_gradient(std::size_t i, double p, double dpdx, double h,
@@ -230,9 +241,10 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
   std::vector<double>& dln_eta = column_.dln_eta;
   stress.resize(nz);
   dln_eta.resize(nz);
-  const auto at_p = rheology_.at_pressure(p[i]);
   for (std::size_t j = 0; j < nz; ++j) {
-    const double eta = at_p.viscosity(T_[i][j], &dln_eta[j]), rate = flow.shear_rate[j];
+    const NodeViscosity& v = node_viscosity(i, j);
+    const double eta = v.eta, rate = flow.shear_rate[j];
+    dln_eta[j] = v.dln_dT;
     stress[j] = eyring_stress_ ? lubricant::eyring_stress(rate, eta, *eyring_stress_) : eta * rate;
   }
   const double k = rheology_.data().thermal_conductivity, c = rheology_.data().specific_heat;
@@ -369,6 +381,12 @@ double FilmTemperature::sweep(const std::vector<double>& p, const std::vector<do
 double FilmTemperature::solve(const std::vector<double>& p, const std::vector<double>& h,
                               const std::vector<double>& poiseuille, double tolerance, int max_sweeps) {
   dpdx_.resize(x_.size());
+  at_pressure_.resize(x_.size());
+  viscosity_.resize(x_.size());
+  for (std::size_t i = 0; i < x_.size(); ++i) {  // a new pressure: every viscosity anew
+    at_pressure_[i] = rheology_.at_pressure(p[i]);
+    viscosity_[i].assign(zeta_.size(), NodeViscosity{});
+  }
   for (std::size_t i = 0; i < x_.size(); ++i)
     dpdx_[i] = flux_carrying_gradient(i, p[i], dpdx_at(p, i, dx_), h[i], poiseuille[i]);
   // Each column's flow (velocity, shear rate, mass flux Q) is that of the temperatures this
@@ -397,7 +415,10 @@ double FilmTemperature::solve(const std::vector<double>& p, const std::vector<do
   // At the coupling's fixed point the flow is that of the converged temperatures either way.
   constexpr double mass_flux_relaxation = 0.5;
   for (std::size_t i = 0; i < x_.size(); ++i) {
-    flows_[i] = column_flow(i, p[i], dpdx_[i], h[i]);
+    ColumnFlow& flow = flows_[i];
+    flow.viscosity.resize(zeta_.size());
+    for (std::size_t j = 0; j < zeta_.size(); ++j) flow.viscosity[j] = node_viscosity(i, j).eta;
+    complete_flow(i, p[i], dpdx_[i], h[i], flow);
     if (eyring_stress_) wall_stress_[i] = flows_[i].eyring_wall_stress;
     const std::vector<double> Q = mass_flux_profile(flows_[i], h[i]);
     if (Q_[i].size() != Q.size()) {  // the first solve, or the first after interpolate_from

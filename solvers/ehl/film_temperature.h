@@ -18,6 +18,7 @@
 // solid nodes), half-cell energy balances at the walls; each column is one tridiagonal
 // solve (tridiagonal_system.h), the columns are swept Gauss–Seidel fashion from the inlet.
 #include <array>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -92,10 +93,20 @@ class FilmTemperature {
   void interpolate_from(const FilmTemperature& coarse);
 
   /// The flow at column i at pressure p, gradient ∂p/∂x and film h, at the current temperatures.
-  [[nodiscard]] ColumnFlow column_flow(std::size_t i, double p, double dpdx, double h) const;
+  [[nodiscard]] ColumnFlow column_flow(std::size_t i, double p, double dpdx, double h) const {
+    ColumnFlow flow;
+    column_flow(i, p, dpdx, h, flow);
+    return flow;
+  }
+  /// The same into `flow`, reusing its storage.
+  void column_flow(std::size_t i, double p, double dpdx, double h, ColumnFlow& flow) const;
   /// The flow at column i for the pressure and film fields (∂p/∂x by central differences).
   [[nodiscard]] ColumnFlow column_flow(std::size_t i, const std::vector<double>& p, const std::vector<double>& h) const {
     return column_flow(i, p[i], dpdx_at(p, i, dx_), h[i]);
+  }
+  /// The same into `flow`, reusing its storage.
+  void column_flow(std::size_t i, const std::vector<double>& p, const std::vector<double>& h, ColumnFlow& flow) const {
+    column_flow(i, p[i], dpdx_at(p, i, dx_), h[i], flow);
   }
   [[nodiscard]] static double dpdx_at(const std::vector<double>& p, std::size_t i, double dx);
   /// The ∂p/∂x at which column i flows in a temperature solve: dpdx, the pressure's own, except
@@ -119,6 +130,17 @@ class FilmTemperature {
   /// One Gauss–Seidel sweep over the columns, downstream then upstream; the largest change [K].
   double sweep(const std::vector<double>& p, const std::vector<double>& h);
   void solve_column(std::size_t i, const std::vector<double>& p, const std::vector<double>& h);
+  /// η(p, T) and ∂ln η/∂T of a film node at this solve()'s pressure, and the temperature T
+  /// they are of (NaN: none yet).
+  struct NodeViscosity {
+    double T = std::numeric_limits<double>::quiet_NaN(), eta = 0.0, dln_dT = 0.0;
+  };
+  /// Film node (i, j)'s at its present temperature, evaluated only when that temperature moved
+  /// since the last evaluation in this solve(): a column's first solve of a sweep meets the
+  /// temperatures its flow was evaluated at, which saves a quarter of the viscosities' pow.
+  const NodeViscosity& node_viscosity(std::size_t i, std::size_t j);
+  /// The rest of column i's flow from flow.viscosity (set by the caller) at the present temperatures.
+  void complete_flow(std::size_t i, double p, double dpdx, double h, ColumnFlow& flow) const;
   /// The conduction coefficients of a solid's rows on the graded nodes and its convection per
   /// Δx: the same for every column, so set once (constructor).
   struct SolidRows {
@@ -140,6 +162,8 @@ class FilmTemperature {
   std::array<std::vector<std::vector<double>>, 2> Ts_; ///< solids [body][i][k]
   std::vector<double> dpdx_;                           ///< each column's ∂p/∂x in this solve() [Pa/m]
   std::vector<ColumnFlow> flows_;                      ///< each column's flow of this solve()
+  std::vector<lubricant::ThermalRheology::AtPressure> at_pressure_;  ///< each column's at this solve()'s p
+  std::vector<std::vector<NodeViscosity>> viscosity_;  ///< [i][j] at this solve()'s p (node_viscosity)
   std::vector<std::vector<double>> Q_;                 ///< Q(x_i, ζ_j) [kg/(m·s)], relaxed towards flows_' (solve)
   std::vector<double> wall_stress_;  ///< each column's Eyring root τ_a of the last solve() (NaN: none yet), a Newton start
   std::array<SolidRows, 2> solid_rows_;

@@ -227,6 +227,7 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
 
   const double ls = problem.length_scale(), ps = problem.pressure_scale(), hs = problem.film_scale();
   std::vector<double> x(n), p(n), h(n), rho_iso(n), eta_iso(n), poiseuille(n);
+  ColumnFlow flow;  // a column's, for its factors: one column's storage for all
   for (std::size_t i = 0; i < n; ++i) x[i] = current.X[i] * ls;
   FilmTemperature field(x, data_.u1, data_.u2, problem.hertz_half_width(), rheology_, solids_, options_.film);
   if (nested) field.interpolate_from(*nested->field);
@@ -269,7 +270,7 @@ ThermalEhlResult ThermalLineContact::coupled(const EhlOptions& grid, const Neste
     // Generalized-Reynolds factors relative to the isothermal coefficients at the same p.
     bool finite = true;
     for (std::size_t i = 0; i < n; ++i) {
-      const ColumnFlow flow = field.column_flow(i, p, h);
+      field.column_flow(i, p, h, flow);
       log_image[i] = std::log(flow.rho_over_eta_e() * eta_iso[i] / rho_iso[i]);
       log_image[n + i] = std::log(flow.rho_star(data_.u1, data_.u2) / rho_iso[i]);
       finite = finite && std::isfinite(log_image[i]) && std::isfinite(log_image[n + i]);
