@@ -12,13 +12,6 @@ void TridiagonalSystem::reset(std::size_t n) {
   rhs_.assign(n, 0.0);
 }
 
-void TridiagonalSystem::add(std::size_t r, double prev, double d, double next, double b) {
-  if (r > 0) sub_[r - 1] += prev;
-  diag_[r] += d;
-  if (r + 1 < diag_.size()) sup_[r] += next;
-  rhs_[r] += b;
-}
-
 const std::vector<double>& TridiagonalSystem::solve(std::string_view what) {
   const std::size_t n = diag_.size();
   pivot_.resize(n);
