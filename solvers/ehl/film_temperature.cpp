@@ -111,12 +111,13 @@ void FilmTemperature::column_flow(std::size_t i, double p, double dpdx, double h
   const auto at_p = rheology_.at_pressure(p);  // the column's nodes share p: one pressure factor
   flow.viscosity.resize(zeta_.size());
   for (std::size_t j = 0; j < zeta_.size(); ++j) flow.viscosity[j] = at_p.viscosity(T_[i][j]);
-  complete_flow(i, p, dpdx, h, flow);
+  complete_flow(i, at_p, dpdx, h, flow);
 }
 
-void FilmTemperature::complete_flow(std::size_t i, double p, double dpdx, double h, ColumnFlow& flow) const {
+void FilmTemperature::complete_flow(std::size_t i, const lubricant::ThermalRheology::AtPressure& at_p, double dpdx,
+                                    double h, ColumnFlow& flow) const {
   flow.rho.resize(zeta_.size());
-  for (std::size_t j = 0; j < zeta_.size(); ++j) flow.rho[j] = rheology_.density(p, T_[i][j]);
+  for (std::size_t j = 0; j < zeta_.size(); ++j) flow.rho[j] = at_p.density(T_[i][j]);
   std::optional<double> guess;
   if (std::isfinite(wall_stress_[i])) guess = wall_stress_[i];
   complete_column_flow(zeta_, Ua_, Ub_, dpdx, h, eyring_stress_, guess, flow);
@@ -418,7 +419,7 @@ double FilmTemperature::solve(const std::vector<double>& p, const std::vector<do
     ColumnFlow& flow = flows_[i];
     flow.viscosity.resize(zeta_.size());
     for (std::size_t j = 0; j < zeta_.size(); ++j) flow.viscosity[j] = node_viscosity(i, j).eta;
-    complete_flow(i, p[i], dpdx_[i], h[i], flow);
+    complete_flow(i, at_pressure_[i], dpdx_[i], h[i], flow);
     if (eyring_stress_) wall_stress_[i] = flows_[i].eyring_wall_stress;
     const std::vector<double> Q = mass_flux_profile(flows_[i], h[i]);
     if (Q_[i].size() != Q.size()) {  // the first solve, or the first after interpolate_from

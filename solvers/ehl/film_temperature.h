@@ -139,8 +139,10 @@ class FilmTemperature {
   /// since the last evaluation in this solve(): a column's first solve of a sweep meets the
   /// temperatures its flow was evaluated at, which saves a quarter of the viscosities' pow.
   const NodeViscosity& node_viscosity(std::size_t i, std::size_t j);
-  /// The rest of column i's flow from flow.viscosity (set by the caller) at the present temperatures.
-  void complete_flow(std::size_t i, double p, double dpdx, double h, ColumnFlow& flow) const;
+  /// The rest of column i's flow from flow.viscosity (set by the caller) at the present
+  /// temperatures, with `at_p` the rheology at the column's pressure.
+  void complete_flow(std::size_t i, const lubricant::ThermalRheology::AtPressure& at_p, double dpdx, double h,
+                     ColumnFlow& flow) const;
   /// The conduction coefficients of a solid's rows on the graded nodes and its convection per
   /// Δx: the same for every column, so set once (constructor).
   struct SolidRows {

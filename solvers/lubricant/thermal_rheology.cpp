@@ -72,6 +72,7 @@ ThermalRheology::AtPressure ThermalRheology::at_pressure(double p) const {
   AtPressure a;
   a.r_ = this;
   a.pressure_factor_ = std::pow(1.0 + std::max(p, 0.0) / roelands_p0, z_);
+  a.density_ratio_ = dowson_higginson_density_ratio(std::max(p, 0.0));
   return a;
 }
 

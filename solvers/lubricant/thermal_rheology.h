@@ -28,18 +28,22 @@ class ThermalRheology {
 
   [[nodiscard]] double viscosity(double p, double T) const;      ///< η(p, T)
 
-  /// η(p, T) along one pressure: Roelands' pressure factor (1 + p/p0)^z is evaluated once
-  /// (a film column's nodes share p, and the temperature sweeps hold p frozen), so each
-  /// temperature costs one pow (Roelands form) and ∂ln η/∂T comes analytically with it.
+  /// η(p, T) and ρ(p, T) along one pressure: Roelands' pressure factor (1 + p/p0)^z and the
+  /// Dowson–Higginson density ratio are evaluated once (a film column's nodes share p, and the
+  /// temperature sweeps hold p frozen), so each temperature costs one pow (Roelands form) and
+  /// ∂ln η/∂T comes analytically with it.
   class AtPressure {
    public:
     /// η(p, T) (the same arithmetic as viscosity(p, T)); with `dln_dT`, ∂ln η/∂T [1/K] there.
     [[nodiscard]] double viscosity(double T, double* dln_dT = nullptr) const;
+    /// ρ(p, T) (the same arithmetic as density(p, T)).
+    [[nodiscard]] double density(double T) const { return r_->ambient_density(T) * density_ratio_; }
 
    private:
     friend class ThermalRheology;
     const ThermalRheology* r_ = nullptr;
     double pressure_factor_ = 1.0;
+    double density_ratio_ = 1.0;  ///< ρ(p, T)/ρ(0, T)
   };
   [[nodiscard]] AtPressure at_pressure(double p) const;
   [[nodiscard]] double density(double p, double T) const;        ///< ρ(p, T)
