@@ -263,7 +263,7 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
   auto row_film = [&](std::size_t j) { return na + j; };
   auto row_b = [&](std::size_t kk) { return na + nz - 1 + kk; };
   TridiagonalSystem& system = column_.system;
-  system.reset(N);
+  system.resize(N);  // each row below is set once
 
   // Heat source S = S* + S'·(T − T*) about the last temperature T* (Patankar 1980, §4.2.5):
   // shear heating τ·∂u/∂z at the frozen shear rate falls with temperature as the stress does,
@@ -302,9 +302,9 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
       const bool deepest = kk + 2 == ns;
       if (deepest) b += deeper * T0_;
       if (body == 0)  // ordering deep → shallow: the deeper node is the previous row
-        system.add(row_a(kk), deepest ? 0.0 : -deeper, C + deeper + shallower, -shallower, b);
+        system.set_row(row_a(kk), deepest ? 0.0 : -deeper, C + deeper + shallower, -shallower, b);
       else            // ordering shallow → deep
-        system.add(row_b(kk), -shallower, C + deeper + shallower, deepest ? 0.0 : -deeper, b);
+        system.set_row(row_b(kk), -shallower, C + deeper + shallower, deepest ? 0.0 : -deeper, b);
     }
   }
 
@@ -332,7 +332,7 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
       d -= v / dz;
       next += v / dz;
     }
-    system.add(row_film(j), prev, d, next, b);
+    system.set_row(row_film(j), prev, d, next, b);
   }
 
   // Walls: half-cell energy balances with conduction from the film and the solid, the
@@ -348,9 +348,9 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
     const double b = storage * T_[i - 1][j] + half * (S.value - S.slope * T_[i][j]);
     const double d = film_g + solid_g + storage - half * S.slope;
     if (body == 0)  // neighbours: solid a's first node (previous row), the film (next)
-      system.add(row_film(j), -solid_g, d, -film_g, b);
+      system.set_row(row_film(j), -solid_g, d, -film_g, b);
     else
-      system.add(row_film(j), -film_g, d, -solid_g, b);
+      system.set_row(row_film(j), -film_g, d, -solid_g, b);
   }
 
   const std::vector<double>& T = system.solve("film temperature column");
@@ -365,7 +365,7 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
 
 double FilmTemperature::sweep(const std::vector<double>& p, const std::vector<double>& h) {
   double change = 0.0;
-  const std::vector<std::vector<double>> before = T_;
+  sweep_start_ = T_;  // copied into kept storage
   // Symmetric sweep: downstream, where the oil and the solids carry the heat, then upstream,
   // which carries the reverse flow of the inlet back in one pass instead of one column per sweep.
   for (std::size_t i = 1; i < x_.size(); ++i) solve_column(i, p, h);
@@ -374,7 +374,7 @@ double FilmTemperature::sweep(const std::vector<double>& p, const std::vector<do
     for (std::size_t j = 0; j < zeta_.size(); ++j) {
       if (!std::isfinite(T_[i][j]))
         throw ConvergenceError(fmt::format("film temperature: non-finite temperature at x = {:.4g} m", x_[i]));
-      change = std::max(change, std::abs(T_[i][j] - before[i][j]));
+      change = std::max(change, std::abs(T_[i][j] - sweep_start_[i][j]));
     }
   return change;
 }

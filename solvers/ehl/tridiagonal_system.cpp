@@ -5,11 +5,11 @@
 
 namespace gearbench::ehl {
 
-void TridiagonalSystem::reset(std::size_t n) {
-  sub_.assign(n - 1, 0.0);
-  sup_.assign(n - 1, 0.0);
-  diag_.assign(n, 0.0);
-  rhs_.assign(n, 0.0);
+void TridiagonalSystem::resize(std::size_t n) {
+  sub_.resize(n - 1);
+  sup_.resize(n - 1);
+  diag_.resize(n);
+  rhs_.resize(n);
 }
 
 const std::vector<double>& TridiagonalSystem::solve(std::string_view what) {

@@ -1,5 +1,5 @@
 #pragma once
-// A tridiagonal system (sub, diag, sup)·x = rhs, assembled row by row and solved by the
+// A tridiagonal system (sub, diag, sup)·x = rhs, set row by row and solved by the
 // Thomas algorithm without pivoting (the film-temperature columns are diagonally dominant:
 // conduction, upwind convection and the source slope all add to the diagonal). Its storage is
 // kept from one solve to the next: a temperature sweep solves thousands of columns of the same
@@ -14,15 +14,16 @@ namespace gearbench::ehl {
 
 class TridiagonalSystem {
  public:
-  /// Zeroes the system for n ≥ 1 unknowns (the storage is reused when n does not grow).
-  void reset(std::size_t n);
-  /// Adds prev·x[r−1] + d·x[r] + next·x[r+1] = b to row r; the coefficient of a neighbour
-  /// outside the system (prev in row 0, next in the last row) is dropped.
-  void add(std::size_t r, double prev, double d, double next, double b) {  // inline: ~70 calls per column
-    if (r > 0) sub_[r - 1] += prev;
-    diag_[r] += d;
-    if (r + 1 < diag_.size()) sup_[r] += next;
-    rhs_[r] += b;
+  /// Sizes the system for n ≥ 1 unknowns (the storage is reused when n does not grow); every
+  /// row is then set once (set_row) before the solve.
+  void resize(std::size_t n);
+  /// Row r: prev·x[r−1] + d·x[r] + next·x[r+1] = b; the coefficient of a neighbour outside the
+  /// system (prev in row 0, next in the last row) is dropped. Inline: ~34 rows per column.
+  void set_row(std::size_t r, double prev, double d, double next, double b) {
+    if (r > 0) sub_[r - 1] = prev;
+    diag_[r] = d;
+    if (r + 1 < diag_.size()) sup_[r] = next;
+    rhs_[r] = b;
   }
   /// The solution; throws std::runtime_error naming `what` on a zero pivot (GSL's EZERODIV).
   /// Valid until the next reset.
