@@ -26,7 +26,7 @@ class TridiagonalSystem {
     rhs_[r] = b;
   }
   /// The solution; throws std::runtime_error naming `what` on a zero pivot (GSL's EZERODIV).
-  /// Valid until the next reset.
+  /// Valid until the next resize or solve.
   [[nodiscard]] const std::vector<double>& solve(std::string_view what);
 
  private:
