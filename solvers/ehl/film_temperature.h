@@ -168,7 +168,7 @@ class FilmTemperature {
   std::vector<std::vector<NodeViscosity>> viscosity_;  ///< [i][j] at this solve()'s p (node_viscosity)
   std::vector<std::vector<double>> Q_;                 ///< Q(x_i, ζ_j) [kg/(m·s)], relaxed towards flows_' (solve)
   std::vector<double> wall_stress_;  ///< each column's Eyring root τ_a of the last solve() (NaN: none yet), a Newton start
-  std::array<SolidRows, 2> solid_rows_;
+  std::array<SolidRows, 2> solid_rows_;                ///< per body (conduction_rows)
   std::vector<std::vector<double>> sweep_start_;       ///< T_ where the last sweep started (its change)
   /// A column solve's work space, kept between columns (a sweep solves 2(n − 1) columns of
   /// the same size: allocating per column cost a tenth of the sweeps' instructions).
