@@ -353,7 +353,7 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
       system.set_row(row_film(j), -film_g, d, -solid_g, b);
   }
 
-  const std::vector<double>& T = system.solve("film temperature column");
+  const std::vector<double>& T = system.solve("tridiagonal solve of a film-temperature column");
   for (std::size_t j = 0; j < nz; ++j) T_[i][j] = T[row_film(j)];
   for (std::size_t kk = 1; kk + 1 < ns; ++kk) {
     Ts_[0][i][kk] = T[row_a(kk)];

@@ -1,7 +1,8 @@
 #include "tridiagonal_system.h"
 
-#include <fmt/format.h>
-#include <stdexcept>
+#include <gsl/gsl_linalg.h>
+
+#include "model/gsl_status.h"
 
 namespace gearbench::ehl {
 
@@ -10,37 +11,17 @@ void TridiagonalSystem::resize(std::size_t n) {
   sup_.resize(n - 1);
   diag_.resize(n);
   rhs_.resize(n);
+  x_.resize(n);
 }
 
 const std::vector<double>& TridiagonalSystem::solve(std::string_view what) {
-  const std::size_t n = diag_.size();
-  pivot_.resize(n);
-  reduced_rhs_.resize(n);
-  x_.resize(n);
-  // Both sweeps are chains of divisions, each step waiting for the last: the value carried
-  // from one step to the next stays in a local (a register) rather than being read back from
-  // the array it was just stored to, which put a store-to-load delay on every step.
-  // Elimination of the subdiagonal, top down (GSL: alpha, z)...
-  double pivot = diag_[0], reduced = rhs_[0];
-  bool zero_pivot = pivot == 0.0;
-  pivot_[0] = pivot;
-  reduced_rhs_[0] = reduced;
-  for (std::size_t i = 1; i < n; ++i) {
-    const double t = sub_[i - 1] / pivot;
-    pivot = diag_[i] - t * sup_[i - 1];
-    reduced = rhs_[i] - t * reduced;
-    pivot_[i] = pivot;
-    reduced_rhs_[i] = reduced;
-    zero_pivot = zero_pivot || pivot == 0.0;
-  }
-  if (zero_pivot) throw std::runtime_error(fmt::format("{}: zero pivot in the tridiagonal solve", what));
-  // ... then back substitution.
-  double x = reduced / pivot;
-  x_[n - 1] = x;
-  for (std::size_t i = n - 1; i-- > 0;) {
-    x = (reduced_rhs_[i] - sup_[i] * x) / pivot_[i];
-    x_[i] = x;
-  }
+  model::gsl_use_status_codes();
+  gsl_vector_const_view d = gsl_vector_const_view_array(diag_.data(), diag_.size());
+  gsl_vector_const_view e = gsl_vector_const_view_array(sup_.data(), sup_.size());
+  gsl_vector_const_view f = gsl_vector_const_view_array(sub_.data(), sub_.size());
+  gsl_vector_const_view b = gsl_vector_const_view_array(rhs_.data(), rhs_.size());
+  gsl_vector_view x = gsl_vector_view_array(x_.data(), x_.size());
+  model::gsl_check(gsl_linalg_solve_tridiag(&d.vector, &e.vector, &f.vector, &b.vector, &x.vector), what);
   return x_;
 }
 

@@ -1,11 +1,10 @@
 #pragma once
-// A tridiagonal system (sub, diag, sup)·x = rhs, set row by row and solved by the
-// Thomas algorithm without pivoting (the film-temperature columns are diagonally dominant:
-// conduction, upwind convection and the source slope all add to the diagonal). Its storage is
-// kept from one solve to the next: a temperature sweep solves thousands of columns of the same
-// size, and GSL's gsl_linalg_solve_tridiag, which this replaces, allocated two work arrays on
-// every call. The arithmetic is GSL's (2.7, linalg/tridiag.c, solve_tridiag_nonsym) operation
-// for operation, so the solutions are bitwise GSL's.
+// A tridiagonal system (sub, diag, sup)·x = rhs, set row by row and solved by GSL
+// (gsl_linalg_solve_tridiag: Thomas's elimination without pivoting; the film-temperature columns
+// are diagonally dominant: conduction, upwind convection and the source slope all add to the
+// diagonal). Its storage is kept from one solve to the next: a temperature sweep solves
+// thousands of columns of the same size, and building the system's four vectors and the
+// solution afresh for each was a tenth of the sweeps' instructions.
 #include <cstddef>
 #include <string_view>
 #include <vector>
@@ -25,13 +24,13 @@ class TridiagonalSystem {
     if (r + 1 < diag_.size()) sup_[r] = next;
     rhs_[r] = b;
   }
-  /// The solution; throws std::runtime_error naming `what` on a zero pivot (GSL's EZERODIV).
-  /// Valid until the next resize or solve.
+  /// The solution; a GSL error (a zero pivot: GSL_EZERODIV) throws, naming `what`. Valid until
+  /// the next resize or solve.
   [[nodiscard]] const std::vector<double>& solve(std::string_view what);
 
  private:
   std::vector<double> sub_, diag_, sup_, rhs_;  ///< the system: sub_[r−1], sup_[r] couple rows r−1, r, r+1
-  std::vector<double> pivot_, reduced_rhs_, x_;  ///< elimination's diagonal and right-hand side, the solution
+  std::vector<double> x_;                       ///< the solution
 };
 
 }  // namespace gearbench::ehl
