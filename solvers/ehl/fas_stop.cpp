@@ -136,10 +136,10 @@ double FasMultigrid::Impl::last_change_estimate(const EhlResult& r) {
 // while its change read a contraction of 0.13, 2.7 × the rule's bound. Over the film, the worst
 // such share fell from 2.69 to 0.74 on 16385 nodes and to ≤ 1 on every map grid but 2561 (1.65;
 // closed by reading ρ over two cycles, iterate_to_error) for 3–15 % more WU (thirty-sixth
-// session, research log). Over the nodes pressurised in either
-// state (the cavitated outlet's film carries no pressure), the inlet's included: restricted to
-// the film below 2·H_c, (200, 5) on 1025 nodes and (1000, 2.5) on 4097 went back to 1.25 and
-// 1.26 of the bound, the heavy loads whose thin film the far deformation and H0 move.
+// session, research log). Over the nodes pressurised in either state (the cavitated outlet's
+// film carries no pressure), the inlet's included: restricted to the film below 2·H_c, (200, 5)
+// on 1025 nodes and (1000, 2.5) on 4097 went back to 1.25 and 1.26 of the bound, the heavy
+// loads whose thin film the far deformation and H0 move.
 double FasMultigrid::Impl::film_change(const Watched& now, const Watched& before) {
   double largest = 0.0;
   for (std::size_t i = 0; i < now.H.size(); ++i)
@@ -223,13 +223,14 @@ void FasMultigrid::Impl::iterate_to_error(EhlResult& r, std::size_t k, double fm
     previous_change = change;
     const double own_factor = std::max(residual_factor(r, previous_residual), figures_factor);
     // The level's own factor is read over this cycle and the last, as the residual's is: a
-    // level's first cycles contract faster than its slow mode. (5, 7.5) on 2561 nodes read 0.34 and then
-    // 0.22, was accepted at 0.22, and ended with H_min 1.65 × the bound off its discrete solution
-    // (H_min contracts at ~0.5 there); read over two cycles, the claim held on every grid of the
-    // maps (largest share 0.87, on 2049 nodes) for 0.6–3.6 % more WU summed over each map and
-    // no benchmark point changed (thirty-eighth session). A last reading above 1, a cycle that
-    // did not contract, is not a factor and is not carried: (100, 10) on 8193 nodes alternates
-    // 0.83 and 1.40 a cycle while its changes halve every two, and carried it never ends.
+    // level's first cycles contract faster than its slow mode. (5, 7.5) on 2561 nodes read 0.34
+    // and then 0.22, was accepted at 0.22, and ended with H_min 1.65 × the bound off its discrete
+    // solution (H_min contracts at ~0.5 there); read over two cycles, the claim held on every
+    // grid of the maps (largest share 0.87, on 2049 nodes) for 0.6–3.6 % more WU summed over each
+    // map and no benchmark point changed (thirty-eighth session). A last reading above 1, a cycle
+    // that did not contract, is not a factor and is not carried: (100, 10) on 8193 nodes
+    // alternates 0.83 and 1.40 a cycle while its changes halve every two, and carried it never
+    // ends.
     const double recent_factor = std::max(own_factor, last_own_factor < 1.0 ? last_own_factor : 0.0);
     last_own_factor = own_factor;
     // Nor below the factors the last two levels that iterated measured on their own: a multigrid

@@ -304,7 +304,7 @@ const RegisterCheck map_algebraic_error(CheckSpec{
 // accepted where every measure read ≤ 0.22. Thirty-seventh: every setting measured (free-boundary
 // sweeps, W depth, the spike solve's order, fewer cycles below the finest) moves the worst grid
 // and leaves it at 1.0–1.7: early change ratios run below the finest level's slow (spike) mode.
-// Thirty-eighth: the figures' factor read over the level's last two cycles, as the residual's is
+// Thirty-eighth: the level's own factor read over its last two cycles, as the residual's is
 // (fas_stop.cpp): 257 0.13, 513 0.21, 641 0.69, 1025 0.64, 2049 0.87 (2, 5), 2561 0.54, 16385 0.58
 // (and 4097 0.63, 8193 0.60 outside this check); (5, 7.5) on 2561 nodes 0.09 (research log).
 const RegisterCheck fixed_grid_algebraic_error(CheckSpec{
