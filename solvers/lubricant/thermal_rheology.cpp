@@ -98,9 +98,7 @@ double ThermalRheology::AtPressure::viscosity(double T, double* dln_dT) const {
   return r.eta0_ * std::exp(a * (-1.0 + term));
 }
 
-double ThermalRheology::density(double p, double T) const {
-  return ambient_density(T) * dowson_higginson_density_ratio(std::max(p, 0.0));
-}
+double ThermalRheology::density(double p, double T) const { return at_pressure(p).density(T); }
 
 double ThermalRheology::thermal_expansion(double /*p*/, double T) const {
   return -iso15144_density_slope / ambient_density(T);

@@ -36,7 +36,7 @@ class ThermalRheology {
    public:
     /// η(p, T) (the same arithmetic as viscosity(p, T)); with `dln_dT`, ∂ln η/∂T [1/K] there.
     [[nodiscard]] double viscosity(double T, double* dln_dT = nullptr) const;
-    /// ρ(p, T) (the same arithmetic as density(p, T)).
+    /// ρ(p, T): the ambient density at T times the Dowson–Higginson ratio at p.
     [[nodiscard]] double density(double T) const { return r_->ambient_density(T) * density_ratio_; }
 
    private:
