@@ -78,7 +78,7 @@ class LinearisedIteration {
 };
 
 /// Local mode analysis of point Gauss–Seidel under-relaxed by ω on the three-point Poiseuille
-/// stencil, swept in the direction of the flow (Trottenberg, Oosterlee & Schüller 2001, §4.3):
+/// stencil, swept in the direction of the flow (Trottenberg, Oosterlee & Schüller 2001, ch. 4):
 /// the mode e^{iθj} is multiplied by (1 − ω + (ω/2)e^{iθ})/(1 − (ω/2)e^{−iθ}).
 double gauss_seidel_amplification(double omega, double theta) {
   const std::complex<double> ahead = std::polar(1.0, theta), behind = std::polar(1.0, -theta);
@@ -166,7 +166,7 @@ const EhlResult& piezoviscous_solution() {
 const RegisterCheck smoothing_gauss_seidel(CheckSpec{
     .id = "ehl.multigrid.smoothing_factor_gauss_seidel", .section = section, .solver = solver,
     .reference = "local mode analysis of point Gauss–Seidel, ω_GS 0.8, on the Poiseuille stencil (Trottenberg et "
-                 "al. 2001, §4.3), at the window's modes",
+                 "al. 2001, ch. 4), at the window's modes",
     .quantity = "largest amplification of a high-frequency mode of a 32-node window by one relaxation sweep, "
                 "linearised at the solution of (M, L) = (20, 10) on 1025 nodes, window at X = −2.5 (the inlet)",
     .unit = "-", .tolerance = {0.03, 0},
