@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <numbers>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "check_registry.h"
@@ -48,7 +49,8 @@ EhlResult converged(const LineContactProblem& p) {
 }
 
 /// x ↦ G(x* + δx) − G(x*) over δ: one application of the linearised iteration G, a sweep or a
-/// cycle run by FasMultigrid from the warm start x* + δx (H0 held at the solution's).
+/// cycle run by FasMultigrid from the warm start x* + δx, over the pressures (each application
+/// starts from the solution's H0: the iteration's pressure block).
 class LinearisedIteration {
  public:
   LinearisedIteration(const LineContactProblem& p, const EhlResult& at, EhlOptions o)
