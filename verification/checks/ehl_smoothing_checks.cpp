@@ -232,6 +232,51 @@ const RegisterCheck two_grid(CheckSpec{
                         {{"M_L", {{20, 10}, {10, 17.5}}}, {"factors", {piezoviscous, spike}}}};
     }});
 
+/// The friction coefficient of the default solve at one of issue 19's benchmark points on
+/// `grid` nodes: its algebraic error (against the grid's discrete solution, residual 3e-10) over
+/// its discretisation error (the discrete solution's change from the grid of half the nodes,
+/// over 2^p − 1 = 3).
+double friction_error_share(double M, double L, int grid) {
+  const LineContactProblem p(LineContactData::from_moes(M, L));
+  EhlOptions o;
+  o.nodes = grid;
+  const double answer = LineContactSolver(p, o).solve().friction_coefficient;
+  const auto discrete = [&](int n) {
+    EhlOptions d;
+    d.nodes = n;
+    d.stop = StopRule::residual;
+    d.tolerance = 3e-10;  // 1e-10 stalls at rounding on 16385 nodes
+    d.max_cycles = 300;
+    return LineContactSolver(p, d).solve().friction_coefficient;
+  };
+  const double fine = discrete(grid), coarse = discrete((grid - 1) / 2 + 1);
+  return std::abs(answer / fine - 1.0) / (std::abs(fine / coarse - 1.0) / 3.0);
+}
+
+// The stop rule watches the films; the contact's pressure, which the friction integrates through
+// η(p), converges slower (the two-grid factor above). Thirty-ninth session: at most 0.15.
+const RegisterCheck friction_algebraic_error(CheckSpec{
+    .id = "ehl.multigrid.friction_algebraic_error", .section = section, .solver = solver,
+    .reference = "each grid's discrete solution (residual 3e-10) and the change of its friction from the grid of "
+                 "half the nodes (its discretisation error)",
+    .quantity = "largest ratio of the default solve's friction-coefficient error to its discretisation error, "
+                "(M, L) = (10, 0), (20, 10), (10, 17.5) on 257, 1025, 4097 and 16385 nodes",
+    .unit = "-", .tolerance = {1.0, 0},
+    .justification = "an answer read from the pressure should be as good as its grid: algebraic error below the "
+                     "discretisation error (Venner & Lubrecht's standard; the films are held to a tenth of it by "
+                     "the stop rule, the friction is not watched). Above 1, the rule must watch the friction too",
+    .tier = Tier::fast, .run = [](const CheckContext&) {
+      double worst = 0.0;
+      nlohmann::json shares = nlohmann::json::array();
+      for (const auto& [M, L] : {std::pair{10.0, 0.0}, {20.0, 10.0}, {10.0, 17.5}})
+        for (const int grid : {257, 1025, 4097, 16385}) {
+          const double share = friction_error_share(M, L, grid);
+          worst = std::max(worst, share);
+          shares.push_back({M, L, grid, share});
+        }
+      return CheckValue{worst, 0.0, {{"columns", "M, L, nodes, share"}, {"shares", shares}}};
+    }});
+
 /// The smoothing factor along the film: a window every half window over the nodes whose pressure
 /// exceeds 1e-3 p_max (the linear range), at an isoviscous and a piezoviscous point.
 reports::Series smoothing_profile(double M, double L, const char* style) {
