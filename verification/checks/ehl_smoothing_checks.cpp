@@ -5,6 +5,8 @@
 // the solution and differenced against its image (docs/ehl-model.md, "Smoothing and two-grid
 // factors"). The references are local mode analysis: of the under-relaxed point Gauss–Seidel where
 // the Poiseuille term dominates (the inlet), and of the damped Jacobi lines in the contact zone.
+// The lines leave the contact's pressure converging slower than the films the stop rule watches,
+// so the friction read from it is held to its grid's discretisation error here too.
 #include <algorithm>
 #include <cmath>
 #include <complex>
