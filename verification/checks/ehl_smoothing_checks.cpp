@@ -12,6 +12,7 @@
 #include <complex>
 #include <fmt/format.h>
 #include <numbers>
+#include <numeric>
 #include <random>
 #include <utility>
 #include <vector>
@@ -40,13 +41,15 @@ constexpr int window = 32, window_edge = 4;
 /// large enough to stand above the converged solution's rounding (residual 1e-11).
 constexpr double perturbation = 1e-6;
 
-/// The converged discrete solution of (M, L) on `nodes`, the point the operators are linearised at.
-EhlResult converged(const LineContactProblem& p) {
+/// The discrete solution of `p` on `grid` nodes, to a scaled residual of `tolerance`: the point
+/// the operators are linearised at (1e-11 on `nodes`), or the reference of an answer's algebraic
+/// error.
+EhlResult discrete_solution(const LineContactProblem& p, int grid = nodes, double tolerance = 1e-11) {
   EhlOptions o;
-  o.nodes = nodes;
+  o.nodes = grid;
   o.stop = StopRule::residual;
-  o.tolerance = 1e-11;
-  o.max_cycles = 200;
+  o.tolerance = tolerance;
+  o.max_cycles = 300;
   return LineContactSolver(p, o).solve();
 }
 
@@ -88,6 +91,14 @@ class LinearisedIteration {
 double gauss_seidel_amplification(double omega, double theta) {
   const std::complex<double> ahead = std::polar(1.0, theta), behind = std::polar(1.0, -theta);
   return std::abs((1.0 - omega + 0.5 * omega * ahead) / (1.0 - 0.5 * omega * behind));
+}
+
+/// The analysis's smoothing factor at the window's high modes, θ = kπ/(w + 1), k = w/2 + 1 … w.
+double gauss_seidel_window_analysis(double omega) {
+  double worst = 0.0;
+  for (int k = window / 2 + 1; k <= window; ++k)
+    worst = std::max(worst, gauss_seidel_amplification(omega, k * pi / (window + 1)));
+  return worst;
 }
 
 /// The window's high-frequency modes: sin(kπj/(w + 1)), j = 1 … w, for k = w/2 + 1 … w.
@@ -142,11 +153,7 @@ double two_grid_factor(const LineContactProblem& p, const EhlResult& at) {
   const double p_max = *std::max_element(at.P.begin(), at.P.end());
   std::vector<char> free(at.P.size());
   for (std::size_t i = 0; i < at.P.size(); ++i) free[i] = at.P[i] > 1e-3 * p_max;
-  const auto norm = [](const Vector& v) {
-    double s = 0.0;
-    for (double x : v) s += x * x;
-    return std::sqrt(s);
-  };
+  const auto norm = [](const Vector& v) { return std::sqrt(std::inner_product(v.begin(), v.end(), v.begin(), 0.0)); };
   std::mt19937 random(19);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   Vector x(at.P.size(), 0.0);
@@ -173,7 +180,7 @@ const LineContactProblem& piezoviscous_point() {
   return p;
 }
 const EhlResult& piezoviscous_solution() {
-  static const EhlResult r = converged(piezoviscous_point());
+  static const EhlResult r = discrete_solution(piezoviscous_point());
   return r;
 }
 
@@ -190,9 +197,8 @@ const RegisterCheck smoothing_gauss_seidel(CheckSpec{
     .tier = Tier::fast, .run = [](const CheckContext&) {
       const double measured = smoothing_factor_at(piezoviscous_point(), piezoviscous_solution(), -2.5);
       const double omega = EhlOptions{}.omega_gauss_seidel;
-      double analysis = 0.0, continuous = 0.0;
-      for (int k = window / 2 + 1; k <= window; ++k)
-        analysis = std::max(analysis, gauss_seidel_amplification(omega, k * pi / (window + 1)));
+      const double analysis = gauss_seidel_window_analysis(omega);
+      double continuous = 0.0;
       for (int q = 0; q <= 1000; ++q)
         continuous = std::max(continuous, gauss_seidel_amplification(omega, 0.5 * pi * (1.0 + q / 1000.0)));
       return CheckValue{measured, analysis, {{"omega_gauss_seidel", omega}, {"analysis_over_pi_2_to_pi", continuous}}};
@@ -227,7 +233,7 @@ const RegisterCheck two_grid(CheckSpec{
     .tier = Tier::fast, .run = [](const CheckContext&) {
       const double piezoviscous = two_grid_factor(piezoviscous_point(), piezoviscous_solution());
       const LineContactProblem high_l(LineContactData::from_moes(10, 17.5));
-      const double spike = two_grid_factor(high_l, converged(high_l));
+      const double spike = two_grid_factor(high_l, discrete_solution(high_l));
       const EhlOptions defaults;
       const double sweeps = defaults.pre_sweeps + defaults.post_sweeps;
       return CheckValue{std::max(piezoviscous, spike), std::pow(1.0 - defaults.omega_jacobi, sweeps),
@@ -244,12 +250,7 @@ double friction_error_share(double M, double L, int grid) {
   o.nodes = grid;
   const double answer = LineContactSolver(p, o).solve().friction_coefficient;
   const auto discrete = [&](int n) {
-    EhlOptions d;
-    d.nodes = n;
-    d.stop = StopRule::residual;
-    d.tolerance = 3e-10;  // 1e-10 stalls at rounding on 16385 nodes
-    d.max_cycles = 300;
-    return LineContactSolver(p, d).solve().friction_coefficient;
+    return discrete_solution(p, n, 3e-10).friction_coefficient;  // 1e-10 stalls at rounding on 16385 nodes
   };
   const double fine = discrete(grid), coarse = discrete((grid - 1) / 2 + 1);
   return std::abs(answer / fine - 1.0) / (std::abs(fine / coarse - 1.0) / 3.0);
@@ -283,7 +284,7 @@ const RegisterCheck friction_algebraic_error(CheckSpec{
 /// exceeds 1e-3 p_max (the linear range), at an isoviscous and a piezoviscous point.
 reports::Series smoothing_profile(double M, double L, const char* style) {
   const LineContactProblem p(LineContactData::from_moes(M, L));
-  const EhlResult at = converged(p);
+  const EhlResult at = discrete_solution(p);
   const LinearisedIteration sweep = linearised_sweep(p, at);
   const double p_max = *std::max_element(at.P.begin(), at.P.end());
   reports::Series profile{.label = fmt::format("M = {:g}, L = {:g}", M, L), .style = style};
@@ -300,9 +301,7 @@ reports::Series smoothing_profile(double M, double L, const char* style) {
 const RegisterSection smoothing_section(SectionSpec{
     .id = "ehl_smoothing", .tier = Tier::fast, .add = [](const CheckContext&, reports::Report& report) {
       const EhlOptions defaults;
-      double analysis = 0.0;
-      for (int k = window / 2 + 1; k <= window; ++k)
-        analysis = std::max(analysis, gauss_seidel_amplification(defaults.omega_gauss_seidel, k * pi / (window + 1)));
+      const double analysis = gauss_seidel_window_analysis(defaults.omega_gauss_seidel);
       std::vector<reports::Series> series{smoothing_profile(10, 0, "linespoints pt 6 lc 1"),
                                           smoothing_profile(20, 10, "linespoints pt 7 lc 2")};
       const double x0 = series[1].x.front(), x1 = series[1].x.back();
