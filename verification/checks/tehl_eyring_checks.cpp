@@ -2,7 +2,8 @@
 // thermal solver, no heat sources with τ0 → ∞ the isothermal one), its heat balance, the
 // trends with the Eyring stress, the traction curve μ(SRR) with its thermal peak, and the
 // issue's 1 MN/m steel roller (cases/tehl_point_roller_eyring.json). The contact is the sliding one of tehl_checks.cpp
-// (cases/tehl_point_sliding.json) with τ0 = 5 MPa unless a check says otherwise.
+// (cases/tehl_point_sliding.json) with τ0 = 5 MPa unless a check says otherwise; and the
+// traction's algebraic error against its discretisation error, Newtonian and Eyring.
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -206,10 +207,9 @@ struct PointCase {
   double inlet_temperature = 0.0;
 };
 
-/// A tehl_point case file of cases/ with an Eyring film (its grid is the check's to choose).
-PointCase eyring_point_case(const CheckContext& ctx, const std::string& file) {
+/// A tehl_point case file of cases/ (its grid and rheology are the check's to choose).
+PointCase point_case(const CheckContext& ctx, const std::string& file) {
   const auto j = model::read_json_file(ctx.case_path(file));
-  if (j.at("rheology") != "eyring") throw std::runtime_error(file + ": rheology is not \"eyring\"");
   PointCase r;
   model::ObjectReader root(j, "");
   r.contact = testing_support::case_contact(root);
@@ -219,14 +219,19 @@ PointCase eyring_point_case(const CheckContext& ctx, const std::string& file) {
   return r;
 }
 
+/// A tehl_point case file of cases/ with an Eyring film.
+PointCase eyring_point_case(const CheckContext& ctx, const std::string& file) {
+  if (model::read_json_file(ctx.case_path(file)).at("rheology") != "eyring")
+    throw std::runtime_error(file + ": rheology is not \"eyring\"");
+  return point_case(ctx, file);
+}
+
 PointCase roller_case(const CheckContext& ctx) { return eyring_point_case(ctx, "tehl_point_roller_eyring.json"); }
 
 ThermalEhlResult solve_point(const PointCase& c, lubricant::ShearRheology rheology, int nodes = 641,
-                              int max_iterations = ThermalEhlOptions{}.max_iterations) {
+                             ThermalEhlOptions o = {}) {
   const lubricant::ThermalRheology fluid(c.lubricant, c.inlet_temperature);
-  ThermalEhlOptions o;
   o.grid.nodes = nodes;
-  o.max_iterations = max_iterations;
   o.film.rheology = rheology;
   return ThermalLineContact(c.contact, fluid, c.solids, o).solve();
 }
@@ -277,6 +282,54 @@ const RegisterCheck roller(CheckSpec{
       return CheckValue{mean_wall_rise(e) / flash_e - 1.0, 0.0,
                         {{"eyring", figures(e, flash_e)}, {"newtonian", figures(n, flash_n)},
                          {"newtonian_wall_vs_flash", mean_wall_rise(n) / flash_n - 1.0}}};
+    }});
+
+// ---- the traction's algebraic error (the thermal counterpart of ehl.multigrid.friction_algebraic_error)
+/// The options that iterate a grid to its discrete solution: the coupling to 1e-8 of the rise
+/// and h_min to 1e-10, each pressure solve to a residual of 1e-11. Tighter moves μ by < 1e-11.
+ThermalEhlOptions to_discrete_solution() {
+  ThermalEhlOptions o;
+  o.stop = CouplingStop::tolerance;
+  o.temperature_tolerance = 1e-8;
+  o.film_tolerance = 1e-10;
+  o.grid.stop = StopRule::residual;
+  o.grid.tolerance = 1e-11;
+  o.max_iterations = 400;
+  return o;
+}
+
+/// The default solve's friction-coefficient error against its grid's discrete solution, over
+/// the friction's discretisation error along x: the discrete solutions' change from the grid
+/// of half the nodes, over 3 (order 2; a lower order would make the error larger and the share
+/// smaller, so this is the stricter reading).
+nlohmann::json friction_error_share(const PointCase& c, lubricant::ShearRheology rheology) {
+  const double given = solve_point(c, rheology).friction_coefficient;
+  const double discrete = solve_point(c, rheology, 641, to_discrete_solution()).friction_coefficient;
+  const double coarse = solve_point(c, rheology, 321, to_discrete_solution()).friction_coefficient;
+  const double algebraic = std::abs(given - discrete), discretisation = std::abs(discrete - coarse) / 3.0;
+  return {{"mu", given}, {"mu_discrete", discrete}, {"mu_discrete_321_nodes", coarse},
+          {"algebraic_error", algebraic}, {"discretisation_error", discretisation},
+          {"share", algebraic / discretisation}};
+}
+
+const RegisterCheck friction_algebraic_error(CheckSpec{
+    .id = "tehl.friction_algebraic_error", .section = section, .solver = solver,
+    .reference = "each contact's discrete solution on the default grid (coupling to 1e-8 of the rise, residual "
+                 "1e-11) and the change of its friction from the grid of half the nodes (its discretisation error)",
+    .quantity = "largest ratio of the default solve's friction-coefficient error to its discretisation error: the "
+                "Newtonian sliding contact (cases/tehl_point_sliding.json) and the issue's Eyring roller "
+                "(cases/tehl_point_roller_eyring.json), 641 nodes",
+    .unit = "-", .tolerance = {1.0, 0},
+    .justification = "an answer read from the temperature and the pressure should be as good as its grid: "
+                     "algebraic error below the discretisation error (Venner & Lubrecht's standard; the coupling "
+                     "stops at a tenth of h_min's and ΔT_max's, the friction is not watched). Above 1, the stop "
+                     "must watch the friction too",
+    .tier = Tier::fast, .run = [](const CheckContext& ctx) {
+      const nlohmann::json sliding =
+          friction_error_share(point_case(ctx, "tehl_point_sliding.json"), lubricant::ShearRheology::newtonian);
+      const nlohmann::json eyring_roller = friction_error_share(roller_case(ctx), lubricant::ShearRheology::eyring);
+      const double worst = std::max(sliding.at("share").get<double>(), eyring_roller.at("share").get<double>());
+      return CheckValue{worst, 0.0, {{"sliding_newtonian", sliding}, {"roller_eyring", eyring_roller}}};
     }});
 
 // ---- grid convergence of the Eyring film (issue 26, "Convergence") -----------------------
