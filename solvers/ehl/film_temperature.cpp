@@ -22,11 +22,18 @@ double integrate_graded(const std::vector<double>& y, const std::vector<double>&
   return sum;
 }
 
-/// B(P) = P/(e^P − 1), the exponential scheme's weight of the downstream neighbour at cell
-/// Péclet number P, exact for steady 1-D convection–diffusion (Patankar 1980, ch. 5, "the
-/// exponential scheme"; Allen & Southwell 1955): 1 − P/2 + P²/12 as P → 0, 0 as P → ∞, and
-/// B(−P) = B(P) + P.
-double bernoulli(double P) { return P == 0.0 ? 1.0 : P / std::expm1(P); }
+/// The exponential scheme's neighbour weights over the diffusion coefficient at cell Péclet
+/// number P, exact for steady 1-D convection–diffusion (Patankar 1980, ch. 5, "the exponential
+/// scheme"; Allen & Southwell 1955): {B(−P), B(P)} for the upstream (previous) and downstream
+/// (next) neighbour, B(P) = P/(e^P − 1) → 1 − P/2 + P²/12 as P → 0. One exponential: B(|P|)
+/// for the smaller weight, the larger from B(−P) = B(P) + P without cancellation.
+struct ExponentialWeights {
+  double prev, next;
+};
+ExponentialWeights exponential_weights(double P) {
+  const double a = std::abs(P), small = a == 0.0 ? 1.0 : a / std::expm1(a), large = small + a;
+  return P >= 0.0 ? ExponentialWeights{large, small} : ExponentialWeights{small, large};
+}
 
 }  // namespace
 
@@ -326,7 +333,8 @@ void FilmTemperature::solve_column(std::size_t i, const std::vector<double>& p, 
     const double a = c * flow.rho[j] * flow.u[j] / dx_;
     const Source S = source(j);
     const double v = -c * Qx[j] / hi;  // coefficient of ∂T/∂ζ
-    const double P = v / (dz * D), w_prev = D * bernoulli(-P), w_next = D * bernoulli(P);
+    const auto [b_prev, b_next] = exponential_weights(v / (dz * D));
+    const double w_prev = D * b_prev, w_next = D * b_next;
     double d = w_prev + w_next - S.slope, b = S.value - S.slope * T_[i][j];
     if (a >= 0.0) {
       d += a;
