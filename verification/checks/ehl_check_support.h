@@ -2,8 +2,11 @@
 // What the steady EHL checks share: Moes' film units, a grid series of one Moes point and the
 // (M, L) map at the default settings (a series' observed order and Richardson value come from
 // the convergence kit, support/convergence.h).
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
+#include "check_registry.h"
 #include "ehl/line_contact_problem.h"
 #include "ehl/line_contact_solver.h"
 #include "model/errors.h"
@@ -22,6 +25,31 @@ struct GridSeries {
 /// The Moes point (M, L) on the given finest grids, each solved to 1 % of its own
 /// discretisation-error estimate (a solve that does not converge throws, failing the check).
 GridSeries grid_series(double M, double L, const std::vector<int>& nodes);
+
+/// A contact's film converged in both the grid and the domain: 32769 nodes, the inlet at 1.5
+/// times the default distance. The default inlet's film deficit is at most 1e-3 by its rule
+/// (LineContactProblem::x_in), and the deficit falls as X_in⁻³ (it goes as g(X_in)^−1.5 and
+/// the gap as X²), so ≤ 3e-4 here; the discretisation error on 32769 nodes is ≤ 1e-4 where the
+/// default's is ≤ 5e-3 (H_c's falls as h²; H_min's at order 1.5–1.9 on the Moes map and
+/// 1.0–1.4 at seed 004's Roelands contacts, ≤ 1.5e-4 there). At (5, 25) on twice the
+/// inlet distance (X_in = −29.1) the solve on 16385 and 32769 nodes stalls at a force balance of
+/// 1e-4: 1.5 times converges (eighteenth session). A reference may take the cycles it needs:
+/// there the spike's slow mode contracts at ~0.5 a cycle on 32769 nodes, 52 cycles with two
+/// pre-sweeps and 61 with the default's one (twenty-ninth session), past the default's cap.
+struct ConvergedFilm {
+  double h_central, h_min;  ///< [m]
+};
+ConvergedFilm converged_film(const ehl::LineContactProblem& p);
+
+/// A default answer's relative errors of H_c and H_min against its converged film, with the
+/// solve's own estimate.
+struct FilmError {
+  double M, L, nodes, H_c, H_min, estimate;
+  [[nodiscard]] double worst() const { return std::max(std::abs(H_c), std::abs(H_min)); }
+};
+
+/// The largest error of `errors`, where it is, and every answer's figures.
+CheckValue worst_film_error(const std::vector<FilmError>& errors);
 
 /// One point of the (M, L) map: the default settings (grid chosen by the 1 % target).
 struct MapPoint {

@@ -134,63 +134,26 @@ const RegisterCheck robustness_sweep(CheckSpec{
                         {{"solves", solves}, {"failed", failed}, {"work_units_total", work}}};
     }});
 
-/// The film of (M, L) converged in both the grid and the domain: 32769 nodes, the inlet at 1.5
-/// times the default distance. The default inlet's film deficit is at most 1e-3 by its rule
-/// (LineContactProblem::x_in), and the deficit falls as X_in⁻³ (it goes as g(X_in)^−1.5 and
-/// the gap as X²), so ≤ 3e-4 here; the discretisation error on 32769 nodes is ≤ 1e-4 where the
-/// default's is ≤ 5e-3 (it falls as h², measured order ≈ 2). At (5, 25) on twice the
-/// inlet distance (X_in = −29.1) the solve on 16385 and 32769 nodes stalls at a force balance of
-/// 1e-4: 1.5 times converges (eighteenth session). A reference may take the cycles it needs:
-/// there the spike's slow mode contracts at ~0.5 a cycle on 32769 nodes, 52 cycles with two
-/// pre-sweeps and 61 with the default's one (twenty-ninth session), past the default's cap.
-struct ConvergedFilm {
-  double H_c, H_min;
-};
-ConvergedFilm converged_film(double M, double L) {
-  const auto d = LineContactData::from_moes(M, L);
-  const LineContactProblem p(d);
-  EhlOptions o;
-  o.nodes = 32769;
-  o.x_in = 1.5 * p.x_in();
-  o.x_out = p.x_out();
-  o.max_cycles = 200;
-  const auto r = LineContactSolver(p, o).solve();
-  return {r.h_central * moes_units(d), r.h_min * moes_units(d)};
-}
-
 /// Each in-range point's default film against converged_film: the relative errors of H_c and
 /// H_min, solved once per process (two checks read them).
-struct MapError {
-  double M, L, nodes, H_c, H_min, estimate;
-  [[nodiscard]] double worst() const { return std::max(std::abs(H_c), std::abs(H_min)); }
-};
-const std::vector<MapError>& map_errors() {
-  static const std::vector<MapError> errors = [] {
-    std::vector<MapError> out;
+const std::vector<FilmError>& map_errors() {
+  static const std::vector<FilmError> errors = [] {
+    std::vector<FilmError> out;
     for (const auto& pt : moes_map()) {
       if (!pt.in_range) continue;
       if (!pt.converged)
         throw std::runtime_error(fmt::format("the default solve of ({:g}, {:g}) did not converge", pt.M, pt.L));
-      const auto ref = converged_film(pt.M, pt.L);
-      out.push_back({pt.M, pt.L, pt.nodes, pt.H_c / ref.H_c - 1.0, pt.H_min / ref.H_min - 1.0, pt.error_estimate});
+      const auto d = LineContactData::from_moes(pt.M, pt.L);
+      const auto ref = converged_film(LineContactProblem(d));
+      out.push_back({pt.M, pt.L, pt.nodes, pt.H_c / (ref.h_central * moes_units(d)) - 1.0,
+                     pt.H_min / (ref.h_min * moes_units(d)) - 1.0, pt.error_estimate});
     }
     return out;
   }();
   return errors;
 }
 
-/// The largest error over the map, where it is, and every point's figures.
-CheckValue worst_map_error() {
-  const auto& errors = map_errors();
-  const auto worst = std::max_element(errors.begin(), errors.end(),
-                                      [](const MapError& a, const MapError& b) { return a.worst() < b.worst(); });
-  nlohmann::json points = nlohmann::json::array();
-  for (const auto& e : errors) points.push_back({e.M, e.L, e.nodes, e.H_c, e.H_min, e.estimate});
-  return CheckValue{worst->worst(), 0.0,
-                    {{"worst_M_L", {worst->M, worst->L}},
-                     {"columns", "M, L, default nodes, error of H_c, error of H_min, the default's estimate"},
-                     {"points", points}}};
-}
+CheckValue worst_map_error() { return worst_film_error(map_errors()); }
 
 const RegisterCheck map_accuracy(CheckSpec{
     .id = "ehl.multigrid.map_default_accuracy", .section = section, .solver = solver,
@@ -518,6 +481,27 @@ const RegisterSection work_section(SectionSpec{
     }});
 
 }  // namespace
+
+CheckValue worst_film_error(const std::vector<FilmError>& errors) {
+  const auto worst = std::max_element(errors.begin(), errors.end(),
+                                      [](const FilmError& a, const FilmError& b) { return a.worst() < b.worst(); });
+  nlohmann::json points = nlohmann::json::array();
+  for (const auto& e : errors) points.push_back({e.M, e.L, e.nodes, e.H_c, e.H_min, e.estimate});
+  return CheckValue{worst->worst(), 0.0,
+                    {{"worst_M_L", {worst->M, worst->L}},
+                     {"columns", "M, L, default nodes, error of H_c, error of H_min, the default's estimate"},
+                     {"points", points}}};
+}
+
+ConvergedFilm converged_film(const LineContactProblem& p) {
+  EhlOptions o;
+  o.nodes = 32769;
+  o.x_in = 1.5 * p.x_in();
+  o.x_out = p.x_out();
+  o.max_cycles = 200;
+  const auto r = LineContactSolver(p, o).solve();
+  return {r.h_central, r.h_min};
+}
 
 GridSeries grid_series(double M, double L, const std::vector<int>& nodes) {
   const auto d = LineContactData::from_moes(M, L);

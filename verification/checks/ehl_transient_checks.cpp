@@ -1,5 +1,6 @@
 // Transient EHL along the path of contact: the seed 004 reproduction (film and pressure
-// from A to E), its time-step convergence, and the report's figures of the mesh.
+// from A to E), its time-step convergence, and the report's figures of the mesh; and the steady
+// solver's default answer at the same pair's contacts against their converged films.
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -7,6 +8,7 @@
 #include <optional>
 
 #include "check_registry.h"
+#include "ehl_check_support.h"
 #include "ehl/transient_mesh_ehl.h"
 #include "geometry/gear_pair_geometry.h"
 #include "support/convergence.h"
@@ -273,6 +275,77 @@ void add_mesh_figures(const CheckContext& ctx, reports::Report& report) {
       r.h_min * 1e6, step_nearest(r, pitch_point(ctx)).h_central * 1e6, r.h_central_min * 1e6,
       r.h_central_max * 1e6)});
 }
+
+// ---- the steady solver's default answer at seed 004's contacts ---------------------------
+// The map checks (ehl_multigrid_checks.cpp) hold the default answer on Moes points: Barus,
+// incompressible. A gear's contacts are Roelands and compressible, and there H_min converges at
+// order → 1 (successive changes of the discrete solutions shrink by 2.81, 2.65, 2.42, 2.56,
+// 2.21, 2.09 from 513 to 32769 nodes at the pitch point), below the 1.5 the estimate assumes
+// (fas_multigrid_impl.h), so the estimate under-reads the error by 17–29 % (forty-first
+// session; the error includes the inlet's deficit).
+
+const std::string steady_section = "Multigrid line-contact EHL (steady, isothermal)";
+
+/// The seed 004 contact at `position` along the path, carrying the whole pinion load (the
+/// single-contact zone's, the heaviest a contact sees).
+LineContactData contact_at(const Seed004& s, const geometry::GearPairGeometry& g, double position) {
+  const auto& op = *s.gear_case.operating;
+  const auto k = g.kinematics(position, op.pinion_speed);
+  LineContactData d = s.fluid;
+  d.reduced_radius = k.reduced_radius;
+  d.u1 = k.u1;
+  d.u2 = k.u2;
+  d.load_per_length = op.pinion_torque / g.radii(0).base / s.gear_case.gear_pair.face_width;
+  return d;
+}
+
+/// The default answer's relative errors at A, halfway A–C, C, halfway C–E and E against each
+/// contact's converged film (ehl_check_support.h), solved once per process.
+const std::vector<FilmError>& contact_errors(const CheckContext& ctx) {
+  static std::map<std::string, std::vector<FilmError>> cache;
+  auto it = cache.find(ctx.cases_dir);
+  if (it != cache.end()) return it->second;
+  const auto s = seed004(ctx);
+  const geometry::GearPairGeometry g(s.gear_case.gear_pair);
+  const auto& path = g.path();
+  std::vector<FilmError> errors;
+  for (const double position : {path.A, 0.5 * (path.A + path.C), path.C, 0.5 * (path.C + path.E), path.E}) {
+    const LineContactProblem p(contact_at(s, g, position));
+    const auto r = LineContactSolver(p, EhlOptions{}).solve();
+    const auto ref = converged_film(p);
+    errors.push_back({p.data().moes_M(), p.data().moes_L(), static_cast<double>(r.X.size()),
+                      r.h_central / ref.h_central - 1.0, r.h_min / ref.h_min - 1.0, r.error_estimate});
+  }
+  return cache.emplace(ctx.cases_dir, std::move(errors)).first->second;
+}
+
+CheckValue worst_contact_error(const CheckContext& ctx) { return worst_film_error(contact_errors(ctx)); }
+
+const std::string contacts_reference =
+    "each contact's film converged in grid and domain (32769 nodes, the inlet at 1.5 times the default distance; "
+    "verification/checks/ehl_check_support.h)";
+const std::string contacts_quantity =
+    "largest relative error of h_c and h_min of the default answer at seed 004's contacts A, halfway A–C, C, "
+    "halfway C–E and E under the whole pinion load (Roelands z 0.68, Dowson–Higginson)";
+
+const RegisterCheck contacts_accuracy(CheckSpec{
+    .id = "ehl.seed004_contacts.default_accuracy", .section = steady_section, .solver = "ehl",
+    .reference = contacts_reference, .quantity = contacts_quantity, .unit = "-", .tolerance = {0.01, 0},
+    .justification = "issue 19: the default answer within 1 % of its grid-converged film, here at the contacts a "
+                     "gear user solves; the reference's own error is ≤ 3e-4 (inlet) and ≤ 1.5e-4 (grid)",
+    .tier = Tier::fast, .run = worst_contact_error});
+
+// Not met: recorded as missed at the figure reached (forty-first session: 0.53–0.64 % at
+// estimates of 0.43–0.50 %, all on 1025 nodes), so that the report says so. With H_min's order
+// taken as 1 the default goes to 2049 nodes here (0.25–0.31 %), but the stop rule's claim breaks
+// on the maps (1.27 at (100, 10) on the default grid, 1.24 at (10, 5) on 16385 nodes): not kept.
+const RegisterCheck contacts_within_target(CheckSpec{
+    .id = "ehl.seed004_contacts.default_within_target", .section = steady_section, .solver = "ehl",
+    .reference = "grid.target_error 0.5 %, plus the inlet's deficit (≤ 0.1 %) and the reference's error (≤ 0.015 %)",
+    .quantity = contacts_quantity, .unit = "-", .tolerance = {0.0062, 0},
+    .justification = "the default's stop promises an estimated error below 0.5 %, as ehl.multigrid."
+                     "map_default_within_target holds it on the Moes map; above, the estimate under-reads H_min",
+    .tier = Tier::fast, .run = worst_contact_error, .recorded = 0.00639, .recorded_tolerance = 0.05});
 
 const RegisterSection transient_section(SectionSpec{.id = "seed004_transient", .tier = Tier::fast,
                                                     .add = add_mesh_figures});
