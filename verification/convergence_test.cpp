@@ -30,6 +30,14 @@ TEST(Convergence, RichardsonRemovesTheLeadingTerm) {
   EXPECT_NEAR(richardson(f[1], f[2], observed_order(f)), 3.0, 1e-12);
 }
 
+// On f_h = 3 + 0.5·h², the finest grid's discretisation error is 0.5/16 = 0.03125 and its
+// Richardson estimate exact: an answer 0.003125 off its discrete solution is a tenth of it.
+TEST(Convergence, AlgebraicErrorShareOfTheRichardsonEstimate) {
+  const auto f = power_series(2.0, 2.0);
+  EXPECT_NEAR(algebraic_error_share(f[2] + 0.003125, f[2], f[1], 2.0), 0.1, 1e-12);
+  EXPECT_NEAR(algebraic_error_share(f[2] - 0.03125, f[2], f[1], 2.0), 1.0, 1e-12);
+}
+
 TEST(Convergence, OrderFromErrors) {
   EXPECT_NEAR(order_from_errors(1.6e-5, 1e-6), 4.0, 1e-12);
   EXPECT_NEAR(order_from_errors(9.0, 1.0, 3.0), 2.0, 1e-12);

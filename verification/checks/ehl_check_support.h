@@ -14,6 +14,9 @@
 
 namespace gearbench::verification {
 
+/// The report section of the steady isothermal solver's checks, whichever file holds them.
+inline constexpr const char* steady_ehl_section = "Multigrid line-contact EHL (steady, isothermal)";
+
 /// 1/(R·√U_Σ): metres to Moes' film H = (h/R)·U_Σ^(−1/2), U_Σ = η0(u1 + u2)/(E′R).
 inline double moes_units(const ehl::LineContactData& d) { return 1.0 / d.moes_film_scale(); }
 

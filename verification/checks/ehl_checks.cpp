@@ -17,7 +17,7 @@ namespace {
 
 using namespace gearbench::ehl;
 
-const char* section = "Multigrid line-contact EHL (steady, isothermal)";
+const char* section = steady_ehl_section;
 const char* solver = "ehl";
 
 // --- Deformation -------------------------------------------------------------------------

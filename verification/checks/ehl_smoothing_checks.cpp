@@ -18,8 +18,10 @@
 #include <vector>
 
 #include "check_registry.h"
+#include "ehl_check_support.h"
 #include "ehl/fas_multigrid.h"
 #include "ehl/line_contact_solver.h"
+#include "support/convergence.h"
 
 namespace gearbench::verification {
 namespace {
@@ -27,7 +29,7 @@ namespace {
 using namespace gearbench::ehl;
 using Vector = std::vector<double>;
 
-const char* section = "Multigrid line-contact EHL (steady, isothermal)";
+const char* section = steady_ehl_section;
 const char* solver = "ehl";
 
 constexpr double pi = std::numbers::pi;
@@ -253,7 +255,7 @@ double friction_error_share(double M, double L, int grid) {
     return discrete_solution(p, n, 3e-10).friction_coefficient;  // 1e-10 stalls at rounding on 16385 nodes
   };
   const double fine = discrete(grid), coarse = discrete((grid - 1) / 2 + 1);
-  return std::abs(answer / fine - 1.0) / (std::abs(fine / coarse - 1.0) / 3.0);
+  return algebraic_error_share(answer, fine, coarse, 2.0);
 }
 
 // The stop rule watches the films; the contact's pressure, which the friction integrates through

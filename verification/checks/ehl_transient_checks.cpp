@@ -284,8 +284,6 @@ void add_mesh_figures(const CheckContext& ctx, reports::Report& report) {
 // (fas_multigrid_impl.h), so the estimate under-reads the error by 17–29 % (forty-first
 // session; the error includes the inlet's deficit).
 
-const std::string steady_section = "Multigrid line-contact EHL (steady, isothermal)";
-
 /// The seed 004 contact at `position` along the path, carrying the whole pinion load (the
 /// single-contact zone's, the heaviest a contact sees).
 LineContactData contact_at(const Seed004& s, const geometry::GearPairGeometry& g, double position) {
@@ -329,7 +327,7 @@ const std::string contacts_quantity =
     "halfway C–E and E under the whole pinion load (Roelands z 0.68, Dowson–Higginson)";
 
 const RegisterCheck contacts_accuracy(CheckSpec{
-    .id = "ehl.seed004_contacts.default_accuracy", .section = steady_section, .solver = "ehl",
+    .id = "ehl.seed004_contacts.default_accuracy", .section = steady_ehl_section, .solver = "ehl",
     .reference = contacts_reference, .quantity = contacts_quantity, .unit = "-", .tolerance = {0.01, 0},
     .justification = "issue 19: the default answer within 1 % of its grid-converged film, here at the contacts a "
                      "gear user solves; the reference's own error is ≤ 3e-4 (inlet) and ≤ 1.5e-4 (grid)",
@@ -340,7 +338,7 @@ const RegisterCheck contacts_accuracy(CheckSpec{
 // taken as 1 the default goes to 2049 nodes here (0.25–0.31 %), but the stop rule's claim breaks
 // on the maps (1.27 at (100, 10) on the default grid, 1.24 at (10, 5) on 16385 nodes): not kept.
 const RegisterCheck contacts_within_target(CheckSpec{
-    .id = "ehl.seed004_contacts.default_within_target", .section = steady_section, .solver = "ehl",
+    .id = "ehl.seed004_contacts.default_within_target", .section = steady_ehl_section, .solver = "ehl",
     .reference = "grid.target_error 0.5 %, plus the inlet's deficit (≤ 0.1 %) and the reference's error (≤ 0.015 %)",
     .quantity = contacts_quantity, .unit = "-", .tolerance = {0.0062, 0},
     .justification = "the default's stop promises an estimated error below 0.5 %, as ehl.multigrid."

@@ -27,6 +27,10 @@ double richardson(double medium, double fine, double order, double ratio) {
   return fine + (fine - medium) / (std::pow(ratio, order) - 1.0);
 }
 
+double algebraic_error_share(double answer, double discrete, double coarser_discrete, double order, double ratio) {
+  return std::abs(answer - discrete) / std::abs(richardson(coarser_discrete, discrete, order, ratio) - discrete);
+}
+
 ConvergenceTable::ConvergenceTable(std::string parameter, std::vector<std::string> columns)
     : parameter_(std::move(parameter)), columns_(std::move(columns)), values_(columns_.size()) {}
 

@@ -24,6 +24,11 @@ namespace gearbench::verification {
 /// Richardson extrapolation of the two finest values of a scheme of order p:
 /// fine + (fine − medium)/(r^p − 1).
 [[nodiscard]] double richardson(double medium, double fine, double order, double ratio = 2.0);
+/// An answer's algebraic error over its grid's discretisation error: |answer − discrete|, the
+/// answer against the grid's discrete solution, over |fine − richardson|, the Richardson estimate
+/// from the discrete solution of the grid `ratio` times coarser (order p).
+[[nodiscard]] double algebraic_error_share(double answer, double discrete, double coarser_discrete, double order,
+                                           double ratio = 2.0);
 
 /// A refinement study: one row per grid (coarse → fine), one column per quantity; each
 /// quantity's change from the previous row and the observed order over the last three rows
